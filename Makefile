@@ -1,0 +1,160 @@
+# Makefile of the adaptive Verlet integrators (avi).
+#
+#   make          tangle, build, every figure, the woven PDF (doc/avi.pdf)
+#   make check    unit tests, golden files, chunk check; ends "N passed, N failed"
+#   make record   re-record the golden files from figures/data (commit separately)
+#   make deps     install the Debian packages the build needs (run by make)
+#   make clean    remove everything generated
+#
+# Only src/*.nw is hand-written C, headers and gnuplot; tangle/ is generated.
+
+SHELL := /bin/bash
+.SHELLFLAGS := -eo pipefail -c
+.DELETE_ON_ERROR:
+.SUFFIXES:
+
+NW      := $(sort $(wildcard src/*.nw))
+CC      ?= cc
+CFLAGS  := -std=c11 -O2 -g -Wall -Wextra -Wpedantic -Werror -ffp-contract=off \
+           -D_POSIX_C_SOURCE=200809L
+LDLIBS  := -lgsl -lgslcblas -lm
+B       := build
+
+# make check SANITIZE=1: everything built with the address and UB sanitizers,
+# in its own build folder so that the two builds never mix.
+ifeq ($(SANITIZE),1)
+CFLAGS  += -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
+LDFLAGS += -fsanitize=address,undefined
+B       := build-san
+endif
+
+.PHONY: all figures doc check record deps clean
+all: figures doc
+
+# --- dependencies ---------------------------------------------------------
+# Debian 12 packages; installed with apt-get as root, with sudo otherwise.
+DEB_PKGS := noweb libgsl-dev gnuplot-nox texlive-latex-base \
+            texlive-latex-recommended texlive-fonts-recommended latexmk \
+            numdiff libcmocka-dev
+deps $(B)/.deps:
+	@missing=$$(for p in $(DEB_PKGS); do \
+	    dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' \
+	    || echo $$p; done); \
+	if [ -n "$$missing" ]; then \
+	  echo "make: installing missing Debian packages:" $$missing; \
+	  if [ "$$(id -u)" = 0 ]; then sudo=; else sudo=sudo; fi; \
+	  $$sudo apt-get update -q; \
+	  DEBIAN_FRONTEND=noninteractive $$sudo apt-get install -y -q \
+	    --no-install-recommends $$missing; \
+	fi
+	@mkdir -p $(B) && touch $(B)/.deps
+
+# --- tangling ---------------------------------------------------------------
+# Every root chunk (found by noroots, never listed by hand) is tangled to
+# tangle/<root>; .c files with #line directives (-L) so that compiler errors
+# and debuggers point into src/*.nw.  cpif rewrites a file only when its text
+# changed, so make rebuilds only what depends on a changed chunk.  The list of
+# roots becomes tangle/files.mk, which make reads back (and re-reads after
+# tangling).  Files of roots that no longer exist are removed.
+tangle/files.mk: $(NW) | $(B)/.deps
+	@roots=$$(noroots $(NW) | sed -e 's/^<<//' -e 's/>>$$//'); \
+	for r in $$roots; do \
+	  mkdir -p tangle/$$(dirname $$r); \
+	  case $$r in *.c) L=-L;; *) L=;; esac; \
+	  notangle $$L -R"$$r" $(NW) > tangle/.tmp; \
+	  cpif tangle/$$r < tangle/.tmp; \
+	done; rm -f tangle/.tmp; \
+	for f in $$(cd tangle && find lib figkit fig test golden -type f 2>/dev/null); do \
+	  echo "$$roots" | grep -qxF "$$f" || { echo "removing stale tangle/$$f"; rm -f tangle/$$f; }; \
+	done; \
+	{ echo "ROOTS := $$(echo $$roots)"; \
+	  for kind in lib figkit fig test; do \
+	    echo "$${kind^^}_C := $$(echo "$$roots" | grep "^$$kind/.*\.c$$" | sed 's|^|tangle/|' | tr '\n' ' ')"; done; \
+	  echo "GP := $$(echo "$$roots" | grep '^fig/.*\.gp$$' | sed 's|^|tangle/|' | tr '\n' ' ')"; \
+	} > $@
+	@echo "tangled $$(noroots $(NW) | wc -l) root chunks from $(words $(NW)) files"
+
+ifeq ($(filter clean,$(MAKECMDGOALS)),)
+include tangle/files.mk
+endif
+
+# --- building ---------------------------------------------------------------
+INC      := -Itangle/lib -Itangle/figkit
+LIB_O    := $(patsubst tangle/%.c,$(B)/%.o,$(LIB_C))
+FIGKIT_O := $(patsubst tangle/%.c,$(B)/%.o,$(FIGKIT_C))
+FIGS     := $(patsubst tangle/fig/%.gp,%,$(GP))
+FIG_BIN  := $(patsubst tangle/fig/%.c,$(B)/fig/%,$(FIG_C))
+TEST_BIN := $(patsubst tangle/test/%.c,$(B)/test/%,$(TEST_C))
+
+$(B)/%.o: tangle/%.c | $(B)/.deps
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(INC) -MMD -MP -c $< -o $@
+
+$(B)/libavi.a: $(LIB_O)
+	rm -f $@ && ar rcs $@ $^
+
+$(FIG_BIN): $(B)/fig/%: $(B)/fig/%.o $(FIGKIT_O) $(B)/libavi.a
+	$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
+
+$(TEST_BIN): $(B)/test/%: $(B)/test/%.o $(B)/libavi.a
+	$(CC) $(CFLAGS) $(LDFLAGS) $^ -lcmocka $(LDLIBS) -o $@
+
+-include $(wildcard $(B)/*/*.d)
+
+# --- figures ----------------------------------------------------------------
+# A figure program fig/<id>.c writes figures/data/<id>*.tsv and, last, the
+# summary figures/data/<id>.summary; the gnuplot script fig/<id>.gp draws
+# figures/<id>.pdf and figures/<id>.png from them.
+figures: $(FIGS:%=figures/%.pdf) $(FIGS:%=figures/%.png)
+
+figures/data/%.summary: $(B)/fig/%
+	@mkdir -p figures/data
+	$< --out figures/data
+
+figures/%.pdf figures/%.png: tangle/fig/%.gp figures/data/%.summary
+	gnuplot -e "datadir='figures/data'; outdir='figures'" $<
+
+# --- the woven document -----------------------------------------------------
+# All chapters are woven in one scope, so chunk cross-references and the
+# identifier index span the whole book; doc/avi.tex is the hand-written master.
+doc: doc/avi.pdf
+
+doc/gen/woven.tex: $(NW) | $(B)/.deps
+	@mkdir -p doc/gen
+	noweave -n -index -autodefs c $(NW) > doc/gen/.tmp
+	cpif $@ < doc/gen/.tmp && rm -f doc/gen/.tmp
+
+# Numbers quoted in the text come from the figures' summaries: each line
+# "key value" of figures/data/<id>.summary becomes \val{<id>}{key} (three
+# significant digits) and \valfull{<id>}{key} (six), exponents as powers of 10.
+doc/gen/values.tex: $(FIGS:%=figures/data/%.summary)
+	@mkdir -p doc/gen
+	awk 'function fmt(v, d,  s, m, e) { \
+	       if (v == int(v) && v < 1e15 && v > -1e15) return sprintf("%d", v); \
+	       s = sprintf("%." d "g", v); \
+	       if (s !~ /e/) return s; \
+	       split(s, m, "e"); e = m[2] + 0; \
+	       return "\\ensuremath{" m[1] "\\times10^{" e "}}" } \
+	     FNR == 1 { id = FILENAME; sub(/.*\//, "", id); sub(/\.summary$$/, "", id) } \
+	     NF == 2 { printf "\\expandafter\\def\\csname val:%s:%s\\endcsname{%s}\n", id, $$1, fmt($$2, 3); \
+	               printf "\\expandafter\\def\\csname valfull:%s:%s\\endcsname{%s}\n", id, $$1, fmt($$2, 6) }' \
+	  $^ > $@
+
+doc/avi.pdf: doc/avi.tex doc/gen/woven.tex doc/gen/values.tex $(FIGS:%=figures/%.pdf)
+	cd doc && latexmk -pdf -interaction=nonstopmode -halt-on-error \
+	  -outdir=gen -quiet avi.tex > gen/latexmk.out 2>&1 \
+	  || { tail -40 gen/latexmk.out; false; }
+	@! grep -E 'LaTeX Warning: (Reference|Citation).*undefined|There were undefined' doc/gen/avi.log \
+	  || { echo "doc/avi.pdf: undefined references (see doc/gen/avi.log)"; false; }
+	cp doc/gen/avi.pdf $@
+
+# --- tests ------------------------------------------------------------------
+check: $(TEST_BIN) $(FIGS:%=figures/data/%.summary) figures
+	@tests/check.sh $(B) $(NW)
+
+record: $(FIGS:%=figures/data/%.summary)
+	tests/golden.sh record
+
+clean:
+	rm -rf build build-san figures/*.pdf figures/*.png figures/data doc/gen doc/avi.pdf
+	find tangle -mindepth 1 ! -name README.md ! -name .gitignore -delete

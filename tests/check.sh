@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# The test driver of `make check`:  tests/check.sh BUILD_DIR SRC.nw...
+# Runs three kinds of check, prints one "ok"/"not ok" line per check, and
+# closes with the line "N passed, N failed".
+set -u
+cd "$(dirname "$0")/.."
+build=$1; shift
+pass=0; fail=0
+count() {   # read TAP-like lines on stdin, echo them, count them
+  while IFS= read -r line; do
+    echo "$line"
+    case $line in
+      'ok '*) pass=$((pass + 1));;
+      'not ok'*) fail=$((fail + 1));;
+    esac
+  done
+}
+
+# 1. Every root chunk must be an output file.  A chunk whose name is
+#    misspelled where it is defined is never used, so it becomes a root: it
+#    shows up here as a name that is not a path the build knows.
+echo "# root chunks"
+odd=$(noroots "$@" | sed -e 's/^<<//' -e 's/>>$//' | grep -Ev \
+  '^(lib/[a-z0-9-]+\.[ch]|figkit/[a-z0-9-]+\.[ch]|fig/[a-z0-9-]+\.(c|gp)|test/test-[a-z0-9-]+\.c|golden/[a-z0-9-]+\.tol)$')
+if [ -z "$odd" ]; then
+  count <<< "ok - every root chunk names an output file"
+else
+  count <<< "not ok - root chunks that are not output files (misspelled?): $(echo $odd)"
+fi
+
+# 2. Unit tests: each cmocka program reports in TAP.  A program that exits
+#    non-zero without a failing test (a crash) counts as one failure.
+for t in "$build"/test/test-*; do
+  case $t in *.o|*.d) continue;; esac
+  echo "# $(basename "$t")"
+  out=$(CMOCKA_MESSAGE_OUTPUT=TAP "$t" 2>&1); rc=$?
+  count < <(grep -E '^(ok|not ok) ' <<< "$out" | sed "s/^\(ok\|not ok\) [0-9]* - /\1 - $(basename "$t"): /")
+  grep -E '^# .*(error|Failure)' <<< "$out" || true
+  if [ $rc -ne 0 ] && ! grep -q '^not ok' <<< "$out"; then
+    count <<< "not ok - $(basename "$t") exited with status $rc"
+    tail -5 <<< "$out"
+  fi
+done
+
+# 3. Golden files: the figure data against tests/golden, by numdiff.
+echo "# golden files"
+count < <(tests/golden.sh compare)
+
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
