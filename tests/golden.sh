@@ -18,6 +18,7 @@ fresh=figures/data
 gold=tests/golden
 strip_timing() { grep -v '^wall_s ' "$1" || true; }
 
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 shopt -s nullglob
 tols=(tangle/golden/*.tol)
 [ ${#tols[@]} -gt 0 ] || { echo "not ok - no tangle/golden/*.tol files"; exit 1; }
@@ -34,13 +35,16 @@ while read -r file opts; do
     echo "not ok - golden $file: tests/golden/$file is missing (make record?)"
   elif [ ! -f "$fresh/$file" ]; then
     echo "not ok - golden $file: figures/data/$file was not produced"
-  elif out=$(numdiff -q $opts <(strip_timing "$gold/$file") \
-                          <(strip_timing "$fresh/$file") 2>&1); then
-    echo "ok - golden $file ($opts)"
   else
-    echo "not ok - golden $file ($opts) differs:"
-    numdiff -S $opts <(strip_timing "$gold/$file") <(strip_timing "$fresh/$file") \
-      2>&1 | head -20 | sed 's/^/#   /'
+    # numdiff needs files it can seek in, not pipes
+    strip_timing "$gold/$file" > "$tmp/golden"
+    strip_timing "$fresh/$file" > "$tmp/fresh"
+    if numdiff -q $opts "$tmp/golden" "$tmp/fresh" > /dev/null 2>&1; then
+      echo "ok - golden $file ($opts)"
+    else
+      echo "not ok - golden $file ($opts) differs:"
+      numdiff -S $opts "$tmp/golden" "$tmp/fresh" 2>&1 | tail -25 | sed 's/^/#   /'
+    fi
   fi
 done < <(cat "${tols[@]}")
 
