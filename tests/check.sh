@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The test driver of `make check`:  tests/check.sh BUILD_DIR SRC.nw...
-# Runs three kinds of check, prints one "ok"/"not ok" line per check, and
+# Runs four kinds of check, prints one "ok"/"not ok" line per check, and
 # closes with the line "N passed, N failed".
 set -u
 cd "$(dirname "$0")/.."
@@ -21,7 +21,7 @@ count() {   # read TAP-like lines on stdin, echo them, count them
 #    shows up here as a name that is not a path the build knows.
 echo "# root chunks"
 odd=$(noroots "$@" | sed -e 's/^<<//' -e 's/>>$//' | grep -Ev \
-  '^(lib/[a-z0-9-]+\.[ch]|figkit/[a-z0-9-]+\.[ch]|fig/[a-z0-9-]+\.(c|gp)|test/test-[a-z0-9-]+\.c|golden/[a-z0-9-]+\.tol)$')
+  '^(lib/[a-z0-9-]+\.[ch]|figkit/[a-z0-9-]+\.[ch]|fig/[a-z0-9-]+\.(c|gp)|test/test-[a-z0-9-]+\.(c|sh)|golden/[a-z0-9-]+\.tol)$')
 if [ -z "$odd" ]; then
   count <<< "ok - every root chunk names an output file"
 else
@@ -42,7 +42,17 @@ for t in "$build"/test/test-*; do
   fi
 done
 
-# 3. Golden files: the figure data against tests/golden, by numdiff.
+# 3. Command-line tests: each tangle/test/test-<id>-*.sh receives the path
+#    of figure program <id> and reports in TAP.
+for t in tangle/test/test-*.sh; do
+  [ -f "$t" ] || continue
+  id=$(basename "$t" .sh); id=${id#test-}; id=${id%-*}
+  echo "# $(basename "$t")"
+  count < <(bash "$t" "$build/fig/$id" 2>&1 | grep -E '^(ok|not ok) ' \
+            | sed "s/^\(ok\|not ok\) [0-9]* - /\1 - /")
+done
+
+# 4. Golden files: the figure data against tests/golden, by numdiff.
 echo "# golden files"
 count < <(tests/golden.sh compare)
 
