@@ -114,6 +114,9 @@ figures/data/%.summary: $(B)/fig/%
 figures/%.pdf figures/%.png: tangle/fig/%.gp figures/data/%.summary
 	gnuplot -e "datadir='figures/data'; outdir='figures'" $<
 
+# HL Fig. 5 draws its panel (c) from the data of hl-fig5c.
+figures/hl-fig5.pdf figures/hl-fig5.png: figures/data/hl-fig5c.summary
+
 # --- the woven document -----------------------------------------------------
 # All chapters are woven in one scope, so chunk cross-references and the
 # identifier index span the whole book; doc/avi.tex is the hand-written master.
