@@ -28,7 +28,7 @@ LDFLAGS += -fsanitize=address,undefined
 B       := build-san
 endif
 
-.PHONY: all figures doc check record deps clean
+.PHONY: all figures doc check record deps clean bench
 all: figures doc
 
 # --- dependencies ---------------------------------------------------------
@@ -64,11 +64,11 @@ tangle/files.mk: $(NW) | $(B)/.deps
 	  notangle $$L -R"$$r" $(NW) > tangle/.tmp; \
 	  cpif tangle/$$r < tangle/.tmp; \
 	done; rm -f tangle/.tmp; \
-	for f in $$(cd tangle && find lib figkit fig test golden -type f 2>/dev/null); do \
+	for f in $$(cd tangle && find lib figkit fig test golden bench -type f 2>/dev/null); do \
 	  echo "$$roots" | grep -qxF "$$f" || { echo "removing stale tangle/$$f"; rm -f tangle/$$f; }; \
 	done; \
 	{ echo "ROOTS := $$(echo $$roots)"; \
-	  for kind in lib figkit fig test; do \
+	  for kind in lib figkit fig test bench; do \
 	    echo "$${kind^^}_C := $$(echo "$$roots" | grep "^$$kind/.*\.c$$" | sed 's|^|tangle/|' | tr '\n' ' ')"; done; \
 	  echo "GP := $$(echo "$$roots" | grep '^fig/.*\.gp$$' | sed 's|^|tangle/|' | tr '\n' ' ')"; \
 	} > $@
@@ -85,6 +85,7 @@ FIGKIT_O := $(patsubst tangle/%.c,$(B)/%.o,$(FIGKIT_C))
 FIGS     := $(patsubst tangle/fig/%.gp,%,$(GP))
 FIG_BIN  := $(patsubst tangle/fig/%.c,$(B)/fig/%,$(FIG_C))
 TEST_BIN := $(patsubst tangle/test/%.c,$(B)/test/%,$(TEST_C))
+BENCH_BIN := $(patsubst tangle/bench/%.c,$(B)/bench/%,$(BENCH_C))
 
 $(B)/%.o: tangle/%.c | $(B)/.deps
 	@mkdir -p $(@D)
@@ -98,6 +99,9 @@ $(FIG_BIN): $(B)/fig/%: $(B)/fig/%.o $(FIGKIT_O) $(B)/libavi.a
 
 $(TEST_BIN): $(B)/test/%: $(B)/test/%.o $(B)/libavi.a
 	$(CC) $(CFLAGS) $(LDFLAGS) $^ -lcmocka $(LDLIBS) -o $@
+
+$(BENCH_BIN): $(B)/bench/%: $(B)/bench/%.o $(B)/libavi.a
+	$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
 
 -include $(wildcard $(B)/*/*.d)
 
@@ -150,6 +154,24 @@ doc/avi.pdf: doc/avi.tex doc/gen/woven.tex doc/gen/values.tex $(FIGS:%=figures/%
 	@! grep -E 'LaTeX Warning: (Reference|Citation).*undefined|There were undefined' doc/gen/avi.log \
 	  || { echo "doc/avi.pdf: undefined references (see doc/gen/avi.log)"; false; }
 	cp doc/gen/avi.pdf $@
+
+# --- benchmarks -------------------------------------------------------------
+# make bench: timings, never part of make or make check.  Each table records
+# the machine and the flags it was measured with, and is typeset in the
+# "Speed" chapter of the PDF (rebuilt here).
+bench: $(BENCH_BIN)
+	@mkdir -p figures/data doc/gen
+	{ echo "# cpu: $$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')"; \
+	  echo "# cores: $$(nproc)"; echo "# compiler: $$($(CC) --version | head -1)"; \
+	  echo "# flags: $(CFLAGS)"; $(B)/bench/bench-steps; } > figures/data/bench-steps.tsv
+	cat figures/data/bench-steps.tsv
+	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{lrrrr}" ; \
+	    print "scheme & ns/step & ratio to Verlet & forces/step & solver iterations/step\\\\ \\hline" } \
+	  /^# cpu/ { cpu = substr($$0, 8) } /^# compiler/ { cc = substr($$0, 13) } \
+	  /^#/ { next } { printf "%s & %s & %s & %s & %s\\\\\n", $$1, $$2, $$3, $$4, $$5 } \
+	  END { print "\\end{tabular}\\\\[1ex] medians of 7 runs of $$10^6$$ steps; " cpu "; " cc "\\end{center}" }' \
+	  figures/data/bench-steps.tsv > doc/gen/bench-steps.tex
+	rm -f doc/avi.pdf && $(MAKE) --no-print-directory doc
 
 # --- tests ------------------------------------------------------------------
 check: $(TEST_BIN) $(FIGS:%=figures/data/%.summary) figures
