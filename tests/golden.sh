@@ -10,13 +10,14 @@
 # figure <id>, where the tolerances are argued.  Its lines read
 #     FILE  NUMDIFF-OPTIONS...
 # with FILE a name in figures/data/.  Lines that start with '#' are comments.
-# Timing keys (wall_s) vary from run to run and are never compared.
+# Timing keys (wall_s, and any key that starts with wall_) vary from run
+# to run and are never compared.
 set -u
 cd "$(dirname "$0")/.."
 mode=${1:-compare}
 fresh=figures/data
 gold=tests/golden
-strip_timing() { grep -v '^wall_s ' "$1" || true; }
+strip_timing() { grep -v '^wall_' "$1" || true; }
 
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 shopt -s nullglob
