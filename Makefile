@@ -165,10 +165,10 @@ bench: $(BENCH_BIN)
 	  echo "# cores: $$(nproc)"; echo "# compiler: $$($(CC) --version | head -1)"; \
 	  echo "# flags: $(CFLAGS)"; $(B)/bench/bench-steps; } > figures/data/bench-steps.tsv
 	cat figures/data/bench-steps.tsv
-	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{lrrrr}" ; \
-	    print "scheme & ns/step & ratio to Verlet & forces/step & solver iterations/step\\\\ \\hline" } \
+	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{llrrrr}" ; \
+	    print "problem & scheme & ns/step & ratio to Verlet & forces/step & solver iterations/step\\\\ \\hline" } \
 	  /^# cpu/ { cpu = substr($$0, 8) } /^# compiler/ { cc = substr($$0, 13) } \
-	  /^#/ { next } { printf "%s & %s & %s & %s & %s\\\\\n", $$1, $$2, $$3, $$4, $$5 } \
+	  /^#/ { next } { printf "%s & %s & %s & %s & %s & %s\\\\\n", $$1, $$2, $$3, $$4, $$5, $$6 } \
 	  END { print "\\end{tabular}\\\\[1ex] medians of 7 runs of $$10^6$$ steps; " cpu "; " cc "\\end{center}" }' \
 	  figures/data/bench-steps.tsv > doc/gen/bench-steps.tex
 	rm -f doc/avi.pdf && $(MAKE) --no-print-directory doc
