@@ -53,7 +53,9 @@ deps $(B)/.deps:
 # Every root chunk (found by noroots, never listed by hand) is tangled to
 # tangle/<root>; .c files with #line directives (-L) so that compiler errors
 # and debuggers point into src/*.nw.  cpif rewrites a file only when its text
-# changed, so make rebuilds only what depends on a changed chunk.  The list of
+# changed, so make rebuilds only what depends on a changed chunk.  (The stale
+# test reads the roots from a here-string: `echo | grep -q` under pipefail can
+# fail when grep exits early and echo gets SIGPIPE.)  The list of
 # roots becomes tangle/files.mk, which make reads back (and re-reads after
 # tangling).  Files of roots that no longer exist are removed.
 tangle/files.mk: $(NW) | $(B)/.deps
@@ -65,7 +67,7 @@ tangle/files.mk: $(NW) | $(B)/.deps
 	  cpif tangle/$$r < tangle/.tmp; \
 	done; rm -f tangle/.tmp; \
 	for f in $$(cd tangle && find lib figkit fig test golden bench -type f 2>/dev/null); do \
-	  echo "$$roots" | grep -qxF "$$f" || { echo "removing stale tangle/$$f"; rm -f tangle/$$f; }; \
+	  grep -qxF "$$f" <<< "$$roots" || { echo "removing stale tangle/$$f"; rm -f tangle/$$f; }; \
 	done; \
 	{ echo "ROOTS := $$(echo $$roots)"; \
 	  for kind in lib figkit fig test bench; do \

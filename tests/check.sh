@@ -28,6 +28,15 @@ else
   count <<< "not ok - root chunks that are not output files (misspelled?): $(echo $odd)"
 fi
 
+# 1b. Every root chunk must have been tangled to its file.
+missing=$(noroots "$@" | sed -e 's/^<<//' -e 's/>>$//' | while read -r r; do
+  [ -f "tangle/$r" ] || echo "$r"; done)
+if [ -z "$missing" ]; then
+  count <<< "ok - every root chunk is tangled to its file"
+else
+  count <<< "not ok - root chunks with no tangled file: $(echo $missing)"
+fi
+
 # 2. Unit tests: each cmocka program reports in TAP.  A program that exits
 #    non-zero without a failing test (a crash) counts as one failure.
 for t in "$build"/test/test-*; do
