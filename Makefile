@@ -173,6 +173,13 @@ bench: $(BENCH_BIN)
 	  /^#/ { next } { printf "%s & %s & %s & %s & %s & %s\\\\\n", $$1, $$2, $$3, $$4, $$5, $$6 } \
 	  END { print "\\end{tabular}\\\\[1ex] medians of 7 runs of $$10^6$$ steps; " cpu "; " cc "\\end{center}" }' \
 	  figures/data/bench-steps.tsv > doc/gen/bench-steps.tex
+	$(B)/bench/bench-pendulum | tee figures/data/bench-pendulum.tsv
+	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{lrrrrrrr}" ; \
+	    print "scheme & step & status & $$t$$ reached & steps & evaluations & max.\\ energy error & s\\\\ \\hline" } \
+	  /^# order/ { note = substr($$0, 3) } /^#/ { next } \
+	  { printf "%s & %s & %s & %s & %s & %s & %s & %s\\\\\n", $$1, $$2, $$3, $$4, $$5, $$6, $$7, $$8 } \
+	  END { print "\\end{tabular}\\\\[1ex] " note "\\end{center}" }' \
+	  figures/data/bench-pendulum.tsv > doc/gen/bench-pendulum.tex
 	rm -f doc/avi.pdf && $(MAKE) --no-print-directory doc
 
 # --- tests ------------------------------------------------------------------
