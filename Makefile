@@ -99,6 +99,10 @@ $(B)/libavi.a: $(LIB_O)
 $(FIG_BIN): $(B)/fig/%: $(B)/fig/%.o $(FIGKIT_O) $(B)/libavi.a
 	$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
 
+# rf-fig1 computes its grid of runs on all cores with OpenMP.
+$(B)/fig/rf-fig1.o: CFLAGS += -fopenmp
+$(B)/fig/rf-fig1: LDFLAGS += -fopenmp
+
 $(TEST_BIN): $(B)/test/%: $(B)/test/%.o $(B)/libavi.a
 	$(CC) $(CFLAGS) $(LDFLAGS) $^ -lcmocka $(LDLIBS) -o $@
 
