@@ -139,12 +139,14 @@ doc/gen/woven.tex: $(NW) | $(B)/.deps
 
 # Numbers quoted in the text come from the figures' summaries: each line
 # "key value" of figures/data/<id>.summary becomes \val{<id>}{key} (three
-# significant digits) and \valfull{<id>}{key} (six), exponents as powers of 10.
+# significant digits) and \valfull{<id>}{key} (six), exponents as powers of 10
+# below 1e-3.
 doc/gen/values.tex: $(FIGS:%=figures/data/%.summary)
 	@mkdir -p doc/gen
 	awk 'function fmt(v, d,  s, m, e) { \
 	       if (v == int(v) && v < 1e15 && v > -1e15) return sprintf("%d", v); \
 	       s = sprintf("%." d "g", v); \
+	       if (v != 0 && v < 1e-3 && v > -1e-3) s = sprintf("%." (d - 1) "e", v); \
 	       if (s !~ /e/) return s; \
 	       split(s, m, "e"); e = m[2] + 0; \
 	       return "\\ensuremath{" m[1] "\\times10^{" e "}}" } \
