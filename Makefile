@@ -102,6 +102,8 @@ $(FIG_BIN): $(B)/fig/%: $(B)/fig/%.o $(FIGKIT_O) $(B)/libavi.a
 # rf-fig1 computes its grid of runs on all cores with OpenMP.
 $(B)/fig/rf-fig1.o: CFLAGS += -fopenmp
 $(B)/fig/rf-fig1: LDFLAGS += -fopenmp
+$(B)/bench/bench-kepler-wp.o: CFLAGS += -fopenmp
+$(B)/bench/bench-kepler-wp: LDFLAGS += -fopenmp
 
 $(TEST_BIN): $(B)/test/%: $(B)/test/%.o $(B)/libavi.a
 	$(CC) $(CFLAGS) $(LDFLAGS) $^ -lcmocka $(LDLIBS) -o $@
@@ -166,12 +168,13 @@ doc/avi.pdf: doc/avi.tex doc/gen/woven.tex doc/gen/values.tex $(FIGS:%=figures/%
 # --- benchmarks -------------------------------------------------------------
 # make bench: timings, never part of make or make check.  Each table records
 # the machine and the flags it was measured with, and is typeset in the
-# "Speed" chapter of the PDF (rebuilt here).
-bench: $(BENCH_BIN)
+# "Speed against accuracy" chapter of the PDF (rebuilt here).
+MACHINE = echo "\# cpu: $$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')"; \
+	  echo "\# cores: $$(nproc)"; echo "\# compiler: $$($(CC) --version | head -1)"; \
+	  echo "\# flags: $(CFLAGS)"
+bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp
 	@mkdir -p figures/data doc/gen
-	{ echo "# cpu: $$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')"; \
-	  echo "# cores: $$(nproc)"; echo "# compiler: $$($(CC) --version | head -1)"; \
-	  echo "# flags: $(CFLAGS)"; $(B)/bench/bench-steps; } > figures/data/bench-steps.tsv
+	{ $(MACHINE); $(B)/bench/bench-steps; } > figures/data/bench-steps.tsv
 	cat figures/data/bench-steps.tsv
 	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{llrrrr}" ; \
 	    print "problem & scheme & ns/step & ratio to Verlet & forces/step & solver iterations/step\\\\ \\hline" } \
@@ -179,12 +182,27 @@ bench: $(BENCH_BIN)
 	  /^#/ { next } { printf "%s & %s & %s & %s & %s & %s\\\\\n", $$1, $$2, $$3, $$4, $$5, $$6 } \
 	  END { print "\\end{tabular}\\\\[1ex] medians of 7 runs of $$10^6$$ steps; " cpu "; " cc "\\end{center}" }' \
 	  figures/data/bench-steps.tsv > doc/gen/bench-steps.tex
-	$(B)/bench/bench-pendulum | tee figures/data/bench-pendulum.tsv
+	$(B)/bench/bench-kepler-wp figures/data/wp.tmp figures/data/wp-needs.tmp
+	{ $(MACHINE); cat figures/data/wp.tmp; } > figures/data/bench-kepler-wp.tsv
+	{ $(MACHINE); cat figures/data/wp-needs.tmp; } > figures/data/bench-kepler-wp-needs.tsv
+	rm -f figures/data/wp.tmp figures/data/wp-needs.tmp
+	gnuplot -e "datadir='figures/data'; outdir='figures'" tangle/bench/bench-kepler-wp.gp
+	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{lrrrr}" ; \
+	    print "method & \\multicolumn{2}{c}{error $$10^{-4}$$} & \\multicolumn{2}{c}{error $$10^{-6}$$}\\\\" ; \
+	    print " & forces & s & forces & s\\\\ \\hline" } \
+	  /^# cpu/ { cpu = substr($$0, 8) } /^# compiler/ { cc = substr($$0, 13) } /^#/ { next } \
+	  { if (!($$2 in row)) { order[++n] = $$2; row[$$2] = $$2 } \
+	    row[$$2] = row[$$2] " & " ($$3 == "nan" ? "--" : $$3) " & " ($$4 == "nan" ? "--" : $$4) } \
+	  END { for (i = 1; i <= n; i++) print row[order[i]] "\\\\"; \
+	    print "\\end{tabular}\\\\[1ex] " cpu "; " cc "\\end{center}" }' \
+	  figures/data/bench-kepler-wp-needs.tsv > doc/gen/bench-kepler-wp-needs.tex
+	{ $(MACHINE); $(B)/bench/bench-pendulum; } | tee figures/data/bench-pendulum.tsv
 	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{lrrrrrrr}" ; \
 	    print "scheme & step & status & $$t$$ reached & steps & evaluations & max.\\ energy error & s\\\\ \\hline" } \
-	  /^# order/ { note = substr($$0, 3) } /^#/ { next } \
+	  /^# order/ { note = substr($$0, 3) } /^# cpu/ { cpu = substr($$0, 8) } \
+	  /^# compiler/ { cc = substr($$0, 13) } /^#/ { next } \
 	  { printf "%s & %s & %s & %s & %s & %s & %s & %s\\\\\n", $$1, $$2, $$3, $$4, $$5, $$6, $$7, $$8 } \
-	  END { print "\\end{tabular}\\\\[1ex] " note "\\end{center}" }' \
+	  END { print "\\end{tabular}\\\\[1ex] " note "; " cpu "; " cc "\\end{center}" }' \
 	  figures/data/bench-pendulum.tsv > doc/gen/bench-pendulum.tex
 	rm -f doc/avi.pdf && $(MAKE) --no-print-directory doc
 
