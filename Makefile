@@ -104,6 +104,8 @@ $(B)/fig/rf-fig1.o: CFLAGS += -fopenmp
 $(B)/fig/rf-fig1: LDFLAGS += -fopenmp
 $(B)/bench/bench-kepler-wp.o: CFLAGS += -fopenmp
 $(B)/bench/bench-kepler-wp: LDFLAGS += -fopenmp
+$(B)/bench/bench-kepler-long.o: CFLAGS += -fopenmp
+$(B)/bench/bench-kepler-long: LDFLAGS += -fopenmp
 
 $(TEST_BIN): $(B)/test/%: $(B)/test/%.o $(B)/libavi.a
 	$(CC) $(CFLAGS) $(LDFLAGS) $^ -lcmocka $(LDLIBS) -o $@
@@ -172,7 +174,7 @@ doc/avi.pdf: doc/avi.tex doc/gen/woven.tex doc/gen/values.tex $(FIGS:%=figures/%
 MACHINE = echo "\# cpu: $$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')"; \
 	  echo "\# cores: $$(nproc)"; echo "\# compiler: $$($(CC) --version | head -1)"; \
 	  echo "\# flags: $(CFLAGS)"
-bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp
+bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-long.gp
 	@mkdir -p figures/data doc/gen
 	{ $(MACHINE); $(B)/bench/bench-steps; } > figures/data/bench-steps.tsv
 	cat figures/data/bench-steps.tsv
@@ -196,6 +198,18 @@ bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp
 	  END { for (i = 1; i <= n; i++) print row[order[i]] "\\\\"; \
 	    print "\\end{tabular}\\\\[1ex] " cpu "; " cc "\\end{center}" }' \
 	  figures/data/bench-kepler-wp-needs.tsv > doc/gen/bench-kepler-wp-needs.tex
+	$(B)/bench/bench-kepler-long figures/data/long.tmp figures/data/long-costs.tmp
+	{ $(MACHINE); cat figures/data/long.tmp; } > figures/data/bench-kepler-long.tsv
+	{ $(MACHINE); cat figures/data/long-costs.tmp; } | tee figures/data/bench-kepler-long-costs.tsv
+	rm -f figures/data/long.tmp figures/data/long-costs.tmp
+	gnuplot -e "datadir='figures/data'; outdir='figures'" tangle/bench/bench-kepler-long.gp
+	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{rrrrrrrrr}" ; \
+	    print "$$\\Delta s$$ & periods & error & \\multicolumn{2}{c}{av-dae} & tolerance & \\multicolumn{2}{c}{rk8pd} & ratio\\\\" ; \
+	    print " & & & forces & s & & forces & s & forces, time\\\\ \\hline" } \
+	  /^# cpu/ { cpu = substr($$0, 8) } /^# compiler/ { cc = substr($$0, 13) } /^#/ { next } \
+	  { printf "%s & %s & %s & %s & %s & %s & %s & %s & %s, %s\\\\\n", $$1, $$2, $$3, $$4, $$5, $$6, $$8, $$9, $$10, $$11 } \
+	  END { print "\\end{tabular}\\\\[1ex] " cpu "; " cc "\\end{center}" }' \
+	  figures/data/bench-kepler-long-costs.tsv > doc/gen/bench-kepler-long.tex
 	{ $(MACHINE); $(B)/bench/bench-pendulum; } | tee figures/data/bench-pendulum.tsv
 	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{lrrrrrrr}" ; \
 	    print "scheme & step & status & $$t$$ reached & steps & evaluations & max.\\ energy error & s\\\\ \\hline" } \
