@@ -106,12 +106,15 @@ $(B)/bench/bench-kepler-wp.o: CFLAGS += -fopenmp
 $(B)/bench/bench-kepler-wp: LDFLAGS += -fopenmp
 $(B)/bench/bench-kepler-long.o: CFLAGS += -fopenmp
 $(B)/bench/bench-kepler-long: LDFLAGS += -fopenmp
+$(B)/bench/bench-cubic-wp.o: CFLAGS += -fopenmp
+$(B)/bench/bench-cubic-wp: LDFLAGS += -fopenmp
+$(B)/bench/bench-cubic-wp: $(FIGKIT_O)
 
 $(TEST_BIN): $(B)/test/%: $(B)/test/%.o $(B)/libavi.a
 	$(CC) $(CFLAGS) $(LDFLAGS) $^ -lcmocka $(LDLIBS) -o $@
 
 $(BENCH_BIN): $(B)/bench/%: $(B)/bench/%.o $(B)/libavi.a
-	$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
+	$(CC) $(CFLAGS) $(LDFLAGS) $(filter %.o,$^) $(B)/libavi.a $(LDLIBS) -o $@
 
 -include $(wildcard $(B)/*/*.d)
 
@@ -174,14 +177,14 @@ doc/avi.pdf: doc/avi.tex doc/gen/woven.tex doc/gen/values.tex $(FIGS:%=figures/%
 MACHINE = echo "\# cpu: $$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')"; \
 	  echo "\# cores: $$(nproc)"; echo "\# compiler: $$($(CC) --version | head -1)"; \
 	  echo "\# flags: $(CFLAGS)"
-bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-long.gp
+bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-long.gp tangle/bench/bench-cubic-wp.gp
 	@mkdir -p figures/data doc/gen
 	{ $(MACHINE); $(B)/bench/bench-steps; } > figures/data/bench-steps.tsv
 	cat figures/data/bench-steps.tsv
-	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{llrrrr}" ; \
-	    print "problem & scheme & ns/step & ratio to Verlet & forces/step & solver iterations/step\\\\ \\hline" } \
+	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{llrrrrl}" ; \
+	    print "problem & scheme & ns/step & ratio to Verlet & forces/step & solver iterations/step & target\\\\ \\hline" } \
 	  /^# cpu/ { cpu = substr($$0, 8) } /^# compiler/ { cc = substr($$0, 13) } \
-	  /^#/ { next } { printf "%s & %s & %s & %s & %s & %s\\\\\n", $$1, $$2, $$3, $$4, $$5, $$6 } \
+	  /^#/ { next } { printf "%s & %s & %s & %s & %s & %s & %s\\\\\n", $$1, $$2, $$3, $$4, $$5, $$6, ($$9 == "-" ? "" : $$9) } \
 	  END { print "\\end{tabular}\\\\[1ex] medians of 7 runs of $$10^6$$ steps; " cpu "; " cc "\\end{center}" }' \
 	  figures/data/bench-steps.tsv > doc/gen/bench-steps.tex
 	$(B)/bench/bench-kepler-wp figures/data/wp.tmp figures/data/wp-needs.tmp
@@ -210,6 +213,20 @@ bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-lo
 	  { printf "%s & %s & %s & %s & %s & %s & %s & %s & %s, %s\\\\\n", $$1, $$2, $$3, $$4, $$5, $$6, $$8, $$9, $$10, $$11 } \
 	  END { print "\\end{tabular}\\\\[1ex] " cpu "; " cc "\\end{center}" }' \
 	  figures/data/bench-kepler-long-costs.tsv > doc/gen/bench-kepler-long.tex
+	$(B)/bench/bench-cubic-wp figures/data/cubic.tmp figures/data/cubic-needs.tmp
+	{ $(MACHINE); cat figures/data/cubic.tmp; } > figures/data/bench-cubic-wp.tsv
+	{ $(MACHINE); cat figures/data/cubic-needs.tmp; } | tee figures/data/bench-cubic-wp-needs.tsv
+	rm -f figures/data/cubic.tmp figures/data/cubic-needs.tmp
+	gnuplot -e "datadir='figures/data'; outdir='figures'" tangle/bench/bench-cubic-wp.gp
+	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{lrrrrrr}" ; \
+	    print "method & \\multicolumn{3}{c}{error $$10^{-4}$$} & \\multicolumn{3}{c}{error $$10^{-6}$$}\\\\" ; \
+	    print " & step & forces & s & step & forces & s\\\\ \\hline" } \
+	  /^# cpu/ { cpu = substr($$0, 8) } /^# compiler/ { cc = substr($$0, 13) } /^#/ { next } \
+	  { if (!($$2 in row)) { order[++n] = $$2; row[$$2] = $$2 } \
+	    for (i = 3; i <= 5; i++) row[$$2] = row[$$2] " & " ($$i == "nan" ? "--" : $$i) } \
+	  END { for (i = 1; i <= n; i++) print row[order[i]] "\\\\"; \
+	    print "\\end{tabular}\\\\[1ex] cheapest run of the sweep; " cpu "; " cc "\\end{center}" }' \
+	  figures/data/bench-cubic-wp-needs.tsv > doc/gen/bench-cubic-wp-needs.tex
 	{ $(MACHINE); $(B)/bench/bench-pendulum; } | tee figures/data/bench-pendulum.tsv
 	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{lrrrrrrr}" ; \
 	    print "scheme & step & status & $$t$$ reached & steps & evaluations & max.\\ energy error & s\\\\ \\hline" } \
