@@ -109,6 +109,8 @@ $(B)/bench/bench-kepler-long: LDFLAGS += -fopenmp
 $(B)/bench/bench-cubic-wp.o: CFLAGS += -fopenmp
 $(B)/bench/bench-cubic-wp: LDFLAGS += -fopenmp
 $(B)/bench/bench-cubic-wp: $(FIGKIT_O)
+$(B)/bench/bench-threebody-wp.o: CFLAGS += -fopenmp
+$(B)/bench/bench-threebody-wp: LDFLAGS += -fopenmp
 
 $(TEST_BIN): $(B)/test/%: $(B)/test/%.o $(B)/libavi.a
 	$(CC) $(CFLAGS) $(LDFLAGS) $^ -lcmocka $(LDLIBS) -o $@
@@ -177,7 +179,8 @@ doc/avi.pdf: doc/avi.tex doc/gen/woven.tex doc/gen/values.tex $(FIGS:%=figures/%
 MACHINE = echo "\# cpu: $$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')"; \
 	  echo "\# cores: $$(nproc)"; echo "\# compiler: $$($(CC) --version | head -1)"; \
 	  echo "\# flags: $(CFLAGS)"
-bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-long.gp tangle/bench/bench-cubic-wp.gp
+bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-long.gp tangle/bench/bench-cubic-wp.gp \
+	  tangle/bench/bench-threebody-wp.gp
 	@mkdir -p figures/data doc/gen
 	{ $(MACHINE); $(B)/bench/bench-steps; } > figures/data/bench-steps.tsv
 	cat figures/data/bench-steps.tsv
@@ -227,6 +230,21 @@ bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-lo
 	  END { for (i = 1; i <= n; i++) print row[order[i]] "\\\\"; \
 	    print "\\end{tabular}\\\\[1ex] cheapest run of the sweep; " cpu "; " cc "\\end{center}" }' \
 	  figures/data/bench-cubic-wp-needs.tsv > doc/gen/bench-cubic-wp-needs.tex
+	$(B)/bench/bench-threebody-wp figures/data/3b.tmp figures/data/3b-ref.tmp figures/data/3b-needs.tmp
+	{ $(MACHINE); cat figures/data/3b.tmp; } > figures/data/bench-threebody-wp.tsv
+	{ $(MACHINE); cat figures/data/3b-ref.tmp; } | tee figures/data/bench-threebody-wp-reference.tsv
+	{ $(MACHINE); cat figures/data/3b-needs.tmp; } | tee figures/data/bench-threebody-wp-needs.tsv
+	rm -f figures/data/3b.tmp figures/data/3b-ref.tmp figures/data/3b-needs.tmp
+	gnuplot -e "datadir='figures/data'; outdir='figures'" tangle/bench/bench-threebody-wp.gp
+	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{lrrrrrr}" ; \
+	    print "method & \\multicolumn{3}{c}{state error $$10^{-2}$$} & \\multicolumn{3}{c}{state error $$10^{-4}$$}\\\\" ; \
+	    print " & step & forces & s & step & forces & s\\\\ \\hline" } \
+	  /^# cpu/ { cpu = substr($$0, 8) } /^# compiler/ { cc = substr($$0, 13) } /^#/ { next } \
+	  { if (!($$2 in row)) { order[++n] = $$2; row[$$2] = $$2 } \
+	    for (i = 3; i <= 5; i++) row[$$2] = row[$$2] " & " ($$i == "-" ? "--" : $$i) } \
+	  END { for (i = 1; i <= n; i++) print row[order[i]] "\\\\"; \
+	    print "\\end{tabular}\\\\[1ex] cheapest run of the sweep; " cpu "; " cc "\\end{center}" }' \
+	  figures/data/bench-threebody-wp-needs.tsv > doc/gen/bench-threebody-wp-needs.tex
 	{ $(MACHINE); $(B)/bench/bench-pendulum; } | tee figures/data/bench-pendulum.tsv
 	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{lrrrrrrr}" ; \
 	    print "scheme & step & status & $$t$$ reached & steps & evaluations & max.\\ energy error & s\\\\ \\hline" } \
