@@ -111,6 +111,9 @@ $(B)/bench/bench-cubic-wp: LDFLAGS += -fopenmp
 $(B)/bench/bench-cubic-wp: $(FIGKIT_O)
 $(B)/bench/bench-threebody-wp.o: CFLAGS += -fopenmp
 $(B)/bench/bench-threebody-wp: LDFLAGS += -fopenmp
+$(B)/bench/bench-atlas.o: CFLAGS += -fopenmp
+$(B)/bench/bench-atlas: LDFLAGS += -fopenmp
+$(B)/bench/bench-atlas: $(FIGKIT_O)
 
 $(TEST_BIN): $(B)/test/%: $(B)/test/%.o $(B)/libavi.a
 	$(CC) $(CFLAGS) $(LDFLAGS) $^ -lcmocka $(LDLIBS) -o $@
@@ -180,7 +183,7 @@ MACHINE = echo "\# cpu: $$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | 
 	  echo "\# cores: $$(nproc)"; echo "\# compiler: $$($(CC) --version | head -1)"; \
 	  echo "\# flags: $(CFLAGS)"
 bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-long.gp tangle/bench/bench-cubic-wp.gp \
-	  tangle/bench/bench-threebody-wp.gp
+	  tangle/bench/bench-threebody-wp.gp tangle/bench/bench-atlas.gp
 	@mkdir -p figures/data doc/gen
 	{ $(MACHINE); $(B)/bench/bench-steps; } > figures/data/bench-steps.tsv
 	cat figures/data/bench-steps.tsv
@@ -245,6 +248,17 @@ bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-lo
 	  END { for (i = 1; i <= n; i++) print row[order[i]] "\\\\"; \
 	    print "\\end{tabular}\\\\[1ex] cheapest run of the sweep; " cpu "; " cc "\\end{center}" }' \
 	  figures/data/bench-threebody-wp-needs.tsv > doc/gen/bench-threebody-wp-needs.tex
+	$(B)/bench/bench-atlas figures/data/atlas.tmp figures/data/atlas-summary.tmp
+	{ $(MACHINE); cat figures/data/atlas.tmp; } > figures/data/bench-atlas.tsv
+	{ $(MACHINE); cat figures/data/atlas-summary.tmp; } | tee figures/data/bench-atlas-summary.tsv
+	rm -f figures/data/atlas.tmp figures/data/atlas-summary.tmp
+	gnuplot -e "datadir='figures/data'; outdir='figures'" tangle/bench/bench-atlas.gp
+	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{longtable}{lllrrcr}" ; \
+	    print "problem & scheme & monitor & largest stable & smallest unstable & monotone & with transients\\\\ \\hline\\endhead" } \
+	  /^# cpu/ { cpu = substr($$0, 8) } /^# compiler/ { cc = substr($$0, 13) } /^#/ { next } \
+	  { printf "%s & %s & %s & %s & %s & %s & %s\\\\\n", $$1, $$2, $$3, $$4, $$5, $$6, $$7 } \
+	  END { print "\\end{longtable}\\\\[1ex] a dash: no such run in the strip; " cpu "; " cc "\\end{center}" }' \
+	  figures/data/bench-atlas-summary.tsv > doc/gen/bench-atlas.tex
 	{ $(MACHINE); $(B)/bench/bench-pendulum; } | tee figures/data/bench-pendulum.tsv
 	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{lrrrrrrr}" ; \
 	    print "scheme & step & status & $$t$$ reached & steps & evaluations & max.\\ energy error & s\\\\ \\hline" } \
