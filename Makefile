@@ -253,11 +253,11 @@ bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-lo
 	{ $(MACHINE); cat figures/data/atlas-summary.tmp; } | tee figures/data/bench-atlas-summary.tsv
 	rm -f figures/data/atlas.tmp figures/data/atlas-summary.tmp
 	gnuplot -e "datadir='figures/data'; outdir='figures'" tangle/bench/bench-atlas.gp
-	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{longtable}{lllrrcr}" ; \
+	awk -F'\t' 'BEGIN { print "{\\footnotesize\\begin{longtable}{lllrrcr}" ; \
 	    print "problem & scheme & monitor & largest stable & smallest unstable & monotone & with transients\\\\ \\hline\\endhead" } \
 	  /^# cpu/ { cpu = substr($$0, 8) } /^# compiler/ { cc = substr($$0, 13) } /^#/ { next } \
 	  { printf "%s & %s & %s & %s & %s & %s & %s\\\\\n", $$1, $$2, $$3, $$4, $$5, $$6, $$7 } \
-	  END { print "\\end{longtable}\\\\[1ex] a dash: no such run in the strip; " cpu "; " cc "\\end{center}" }' \
+	  END { print "\\end{longtable}}\\par\\noindent{\\small a dash: no such run in the strip; " cpu "; " cc "}\\par" }' \
 	  figures/data/bench-atlas-summary.tsv > doc/gen/bench-atlas.tex
 	{ $(MACHINE); $(B)/bench/bench-pendulum; } | tee figures/data/bench-pendulum.tsv
 	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{lrrrrrrr}" ; \
