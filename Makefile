@@ -182,6 +182,18 @@ doc/avi.pdf: doc/avi.tex doc/gen/woven.tex doc/gen/values.tex $(FIGS:%=figures/%
 MACHINE = echo "\# cpu: $$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')"; \
 	  echo "\# cores: $$(nproc)"; echo "\# compiler: $$($(CC) --version | head -1)"; \
 	  echo "\# flags: $(CFLAGS)"
+# The cheapest run of each method for two targets, as a LaTeX table:
+# $(1) the TSV (target, method, step, forces, seconds, ...), $(2) the table,
+# $(3) what the targets bound, $(4) and $(5) the two targets.
+CHEAPEST_TABLE = awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{lrrrrrr}" ; \
+	    print "method & \\multicolumn{3}{c}{$(3) $$$(4)$$} & \\multicolumn{3}{c}{$(3) $$$(5)$$}\\\\" ; \
+	    print " & step & forces & s & step & forces & s\\\\ \\hline" } \
+	  /^\# cpu/ { cpu = substr($$0, 8) } /^\# compiler/ { cc = substr($$0, 13) } /^\#/ { next } \
+	  { if (!($$2 in row)) { order[++n] = $$2; row[$$2] = $$2 } \
+	    for (i = 3; i <= 5; i++) row[$$2] = row[$$2] " & " ($$i == "nan" || $$i == "-" ? "--" : $$i) } \
+	  END { for (i = 1; i <= n; i++) print row[order[i]] "\\\\"; \
+	    print "\\end{tabular}\\\\[1ex] cheapest run of the sweep; " cpu "; " cc "\\end{center}" }' \
+	  $(1) > $(2)
 bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-long.gp tangle/bench/bench-cubic-wp.gp \
 	  tangle/bench/bench-threebody-wp.gp tangle/bench/bench-atlas.gp
 	@mkdir -p figures/data doc/gen
@@ -224,30 +236,14 @@ bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-lo
 	{ $(MACHINE); cat figures/data/cubic-needs.tmp; } | tee figures/data/bench-cubic-wp-needs.tsv
 	rm -f figures/data/cubic.tmp figures/data/cubic-needs.tmp
 	gnuplot -e "datadir='figures/data'; outdir='figures'" tangle/bench/bench-cubic-wp.gp
-	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{lrrrrrr}" ; \
-	    print "method & \\multicolumn{3}{c}{error $$10^{-4}$$} & \\multicolumn{3}{c}{error $$10^{-6}$$}\\\\" ; \
-	    print " & step & forces & s & step & forces & s\\\\ \\hline" } \
-	  /^# cpu/ { cpu = substr($$0, 8) } /^# compiler/ { cc = substr($$0, 13) } /^#/ { next } \
-	  { if (!($$2 in row)) { order[++n] = $$2; row[$$2] = $$2 } \
-	    for (i = 3; i <= 5; i++) row[$$2] = row[$$2] " & " ($$i == "nan" ? "--" : $$i) } \
-	  END { for (i = 1; i <= n; i++) print row[order[i]] "\\\\"; \
-	    print "\\end{tabular}\\\\[1ex] cheapest run of the sweep; " cpu "; " cc "\\end{center}" }' \
-	  figures/data/bench-cubic-wp-needs.tsv > doc/gen/bench-cubic-wp-needs.tex
+	$(call CHEAPEST_TABLE,figures/data/bench-cubic-wp-needs.tsv,doc/gen/bench-cubic-wp-needs.tex,error,10^{-4},10^{-6})
 	$(B)/bench/bench-threebody-wp figures/data/3b.tmp figures/data/3b-ref.tmp figures/data/3b-needs.tmp
 	{ $(MACHINE); cat figures/data/3b.tmp; } > figures/data/bench-threebody-wp.tsv
 	{ $(MACHINE); cat figures/data/3b-ref.tmp; } | tee figures/data/bench-threebody-wp-reference.tsv
 	{ $(MACHINE); cat figures/data/3b-needs.tmp; } | tee figures/data/bench-threebody-wp-needs.tsv
 	rm -f figures/data/3b.tmp figures/data/3b-ref.tmp figures/data/3b-needs.tmp
 	gnuplot -e "datadir='figures/data'; outdir='figures'" tangle/bench/bench-threebody-wp.gp
-	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{lrrrrrr}" ; \
-	    print "method & \\multicolumn{3}{c}{state error $$10^{-2}$$} & \\multicolumn{3}{c}{state error $$10^{-4}$$}\\\\" ; \
-	    print " & step & forces & s & step & forces & s\\\\ \\hline" } \
-	  /^# cpu/ { cpu = substr($$0, 8) } /^# compiler/ { cc = substr($$0, 13) } /^#/ { next } \
-	  { if (!($$2 in row)) { order[++n] = $$2; row[$$2] = $$2 } \
-	    for (i = 3; i <= 5; i++) row[$$2] = row[$$2] " & " ($$i == "-" ? "--" : $$i) } \
-	  END { for (i = 1; i <= n; i++) print row[order[i]] "\\\\"; \
-	    print "\\end{tabular}\\\\[1ex] cheapest run of the sweep; " cpu "; " cc "\\end{center}" }' \
-	  figures/data/bench-threebody-wp-needs.tsv > doc/gen/bench-threebody-wp-needs.tex
+	$(call CHEAPEST_TABLE,figures/data/bench-threebody-wp-needs.tsv,doc/gen/bench-threebody-wp-needs.tex,state error,10^{-2},10^{-4})
 	$(B)/bench/bench-atlas figures/data/atlas.tmp figures/data/atlas-summary.tmp
 	{ $(MACHINE); cat figures/data/atlas.tmp; } > figures/data/bench-atlas.tsv
 	{ $(MACHINE); cat figures/data/atlas-summary.tmp; } | tee figures/data/bench-atlas-summary.tsv
