@@ -28,14 +28,14 @@ LDFLAGS += -fsanitize=address,undefined
 B       := build-san
 endif
 
-.PHONY: all figures doc check record deps clean bench
+.PHONY: all figures doc check record deps clean bench install uninstall
 all: figures doc
 
 # --- dependencies ---------------------------------------------------------
 # Debian 12 packages; installed with apt-get as root, with sudo otherwise.
 DEB_PKGS := noweb libgsl-dev gnuplot-nox texlive-latex-base \
             texlive-latex-recommended texlive-fonts-recommended latexmk \
-            numdiff libcmocka-dev
+            numdiff libcmocka-dev pkg-config
 deps $(B)/.deps:
 	@missing=$$(for p in $(DEB_PKGS); do \
 	    dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' \
@@ -66,7 +66,7 @@ tangle/files.mk: $(NW) | $(B)/.deps
 	  notangle $$L -R"$$r" $(NW) > tangle/.tmp; \
 	  cpif tangle/$$r < tangle/.tmp; \
 	done; rm -f tangle/.tmp; \
-	for f in $$(cd tangle && find lib figkit fig test golden bench -type f 2>/dev/null); do \
+	for f in $$(cd tangle && find lib figkit fig test golden bench examples -type f 2>/dev/null); do \
 	  grep -qxF "$$f" <<< "$$roots" || { echo "removing stale tangle/$$f"; rm -f tangle/$$f; }; \
 	done; \
 	{ echo "ROOTS := $$(echo $$roots)"; \
@@ -96,6 +96,14 @@ $(B)/%.o: tangle/%.c | $(B)/.deps
 $(B)/libavi.a: $(LIB_O)
 	rm -f $@ && ar rcs $@ $^
 
+# The shared library is built from position-independent objects of its own.
+PIC_O := $(patsubst tangle/%.c,$(B)/pic/%.o,$(LIB_C))
+$(B)/pic/%.o: tangle/%.c | $(B)/.deps
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -fPIC $(INC) -MMD -MP -c $< -o $@
+$(B)/libavi.so: $(PIC_O)
+	$(CC) -shared -Wl,-soname,libavi.so.0 $(LDFLAGS) $^ $(LDLIBS) -o $@
+
 $(FIG_BIN): $(B)/fig/%: $(B)/fig/%.o $(FIGKIT_O) $(B)/libavi.a
 	$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
 
@@ -121,7 +129,7 @@ $(TEST_BIN): $(B)/test/%: $(B)/test/%.o $(B)/libavi.a
 $(BENCH_BIN): $(B)/bench/%: $(B)/bench/%.o $(B)/libavi.a
 	$(CC) $(CFLAGS) $(LDFLAGS) $(filter %.o,$^) $(B)/libavi.a $(LDLIBS) -o $@
 
--include $(wildcard $(B)/*/*.d)
+-include $(wildcard $(B)/*/*.d $(B)/pic/*/*.d)
 
 # --- figures ----------------------------------------------------------------
 # A figure program fig/<id>.c writes figures/data/<id>*.tsv and, last, the
@@ -264,6 +272,33 @@ bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-lo
 	  END { print "\\end{tabular}\\\\[1ex] " note "; " cpu "; " cc "\\end{center}" }' \
 	  figures/data/bench-pendulum.tsv > doc/gen/bench-pendulum.tex
 	rm -f doc/avi.pdf && $(MAKE) --no-print-directory doc
+
+# --- install ----------------------------------------------------------------
+# make install PREFIX=... DESTDIR=...: the libraries, the public headers (in
+# include/avi), the pkg-config file and the woven PDF; make uninstall removes
+# exactly these (src/97-cli.nw).
+PREFIX  ?= /usr/local
+DESTDIR ?=
+VERSION  = $(shell sed -n 's/^\#define AVI_VERSION "\(.*\)"/\1/p' tangle/lib/avi-version.h)
+PUBLIC_H = tangle/lib/avi.h $(wildcard tangle/lib/avi-*.h)
+INSTALLED = lib/libavi.a lib/libavi.so lib/libavi.so.0 lib/libavi.so.$(VERSION) \
+	    lib/pkgconfig/avi.pc share/doc/avi/avi.pdf \
+	    $(patsubst tangle/lib/%,include/avi/%,$(PUBLIC_H))
+install: $(B)/libavi.a $(B)/libavi.so doc/avi.pdf tangle/lib/avi.pc.in
+	install -d $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include/avi \
+	  $(DESTDIR)$(PREFIX)/share/doc/avi
+	install -m 644 $(B)/libavi.a $(DESTDIR)$(PREFIX)/lib/libavi.a
+	install -m 755 $(B)/libavi.so $(DESTDIR)$(PREFIX)/lib/libavi.so.$(VERSION)
+	ln -sf libavi.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/libavi.so.0
+	ln -sf libavi.so.0 $(DESTDIR)$(PREFIX)/lib/libavi.so
+	install -m 644 $(PUBLIC_H) $(DESTDIR)$(PREFIX)/include/avi/
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' tangle/lib/avi.pc.in \
+	  > $(DESTDIR)$(PREFIX)/lib/pkgconfig/avi.pc
+	install -m 644 doc/avi.pdf $(DESTDIR)$(PREFIX)/share/doc/avi/avi.pdf
+
+uninstall:
+	rm -f $(addprefix $(DESTDIR)$(PREFIX)/,$(INSTALLED))
+	-rmdir $(DESTDIR)$(PREFIX)/include/avi $(DESTDIR)$(PREFIX)/share/doc/avi 2>/dev/null
 
 # --- tests ------------------------------------------------------------------
 check: $(TEST_BIN) $(FIGS:%=figures/data/%.summary) figures
