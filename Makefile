@@ -28,7 +28,7 @@ LDFLAGS += -fsanitize=address,undefined
 B       := build-san
 endif
 
-.PHONY: all figures doc check record deps clean bench install uninstall
+.PHONY: all figures doc check record deps clean bench install uninstall memcheck
 all: figures doc
 
 # --- dependencies ---------------------------------------------------------
@@ -272,6 +272,21 @@ bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-lo
 	  END { print "\\end{tabular}\\\\[1ex] " note "; " cpu "; " cc "\\end{center}" }' \
 	  figures/data/bench-pendulum.tsv > doc/gen/bench-pendulum.tex
 	rm -f doc/avi.pdf && $(MAKE) --no-print-directory doc
+
+# --- memcheck ---------------------------------------------------------------
+# make memcheck: every unit test and every figure program (with its defaults,
+# writing into a temporary directory) under valgrind; any error, or a leak
+# that is definitely lost, fails it.  Not part of make check: it takes about
+# ten minutes.
+VALGRIND = valgrind -q --error-exitcode=9 --leak-check=full --errors-for-leak-kinds=definite
+memcheck: $(TEST_BIN) $(FIG_BIN)
+	@command -v valgrind > /dev/null || { echo "make memcheck needs valgrind (apt-get install valgrind)"; exit 2; }
+	@tmp=$$(mktemp -d); fail=0; \
+	for t in $(TEST_BIN) $(FIG_BIN); do \
+	  case $$t in */fig/*) args="--out $$tmp";; *) args=;; esac; \
+	  if $(VALGRIND) $$t $$args > /dev/null 2> $$tmp/err; then echo "ok - $$t"; \
+	  else echo "not ok - $$t"; grep -v '^\[' $$tmp/err | head -20; fail=1; fi; \
+	done; rm -rf $$tmp; exit $$fail
 
 # --- install ----------------------------------------------------------------
 # make install PREFIX=... DESTDIR=...: the libraries, the public headers (in
