@@ -196,6 +196,11 @@ doc/avi.pdf: doc/avi.tex doc/gen/woven.tex doc/gen/values.tex $(FIGS:%=figures/%
 MACHINE = echo "\# cpu: $$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')"; \
 	  echo "\# cores: $$(nproc)"; echo "\# compiler: $$($(CC) --version | head -1)"; \
 	  echo "\# flags: $(CFLAGS)"
+# A bench table gets the machine's record on top (STAMP: the program's
+# temporary output, the table, and "show" to print it); a bench chart is
+# drawn from figures/data into figures (PLOT).
+STAMP = { $(MACHINE); cat $(1); } > $(2) && rm -f $(1)$(if $(3), && cat $(2))
+PLOT  = gnuplot -e "datadir='figures/data'; outdir='figures'" tangle/bench/$(1).gp
 # The cheapest run of each method for two targets, as a LaTeX table:
 # $(1) the TSV (target, method, step, forces, seconds, ...), $(2) the table,
 # $(3) what the targets bound, $(4) and $(5) the two targets.
@@ -220,10 +225,9 @@ bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-lo
 	  END { print "\\end{tabular}\\\\[1ex] medians of 7 runs of $$10^6$$ steps; " cpu "; " cc "\\end{center}" }' \
 	  figures/data/bench-steps.tsv > doc/gen/bench-steps.tex
 	$(B)/bench/bench-kepler-wp figures/data/wp.tmp figures/data/wp-needs.tmp
-	{ $(MACHINE); cat figures/data/wp.tmp; } > figures/data/bench-kepler-wp.tsv
-	{ $(MACHINE); cat figures/data/wp-needs.tmp; } > figures/data/bench-kepler-wp-needs.tsv
-	rm -f figures/data/wp.tmp figures/data/wp-needs.tmp
-	gnuplot -e "datadir='figures/data'; outdir='figures'" tangle/bench/bench-kepler-wp.gp
+	$(call STAMP,figures/data/wp.tmp,figures/data/bench-kepler-wp.tsv)
+	$(call STAMP,figures/data/wp-needs.tmp,figures/data/bench-kepler-wp-needs.tsv)
+	$(call PLOT,bench-kepler-wp)
 	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{lrrrr}" ; \
 	    print "method & \\multicolumn{2}{c}{error $$10^{-4}$$} & \\multicolumn{2}{c}{error $$10^{-6}$$}\\\\" ; \
 	    print " & forces & s & forces & s\\\\ \\hline" } \
@@ -234,10 +238,9 @@ bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-lo
 	    print "\\end{tabular}\\\\[1ex] " cpu "; " cc "\\end{center}" }' \
 	  figures/data/bench-kepler-wp-needs.tsv > doc/gen/bench-kepler-wp-needs.tex
 	$(B)/bench/bench-kepler-long figures/data/long.tmp figures/data/long-costs.tmp
-	{ $(MACHINE); cat figures/data/long.tmp; } > figures/data/bench-kepler-long.tsv
-	{ $(MACHINE); cat figures/data/long-costs.tmp; } | tee figures/data/bench-kepler-long-costs.tsv
-	rm -f figures/data/long.tmp figures/data/long-costs.tmp
-	gnuplot -e "datadir='figures/data'; outdir='figures'" tangle/bench/bench-kepler-long.gp
+	$(call STAMP,figures/data/long.tmp,figures/data/bench-kepler-long.tsv)
+	$(call STAMP,figures/data/long-costs.tmp,figures/data/bench-kepler-long-costs.tsv,show)
+	$(call PLOT,bench-kepler-long)
 	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{rrrrrrrrr}" ; \
 	    print "$$\\Delta s$$ & periods & error & \\multicolumn{2}{c}{av-dae} & tolerance & \\multicolumn{2}{c}{rk8pd} & ratio\\\\" ; \
 	    print " & & & forces & s & & forces & s & forces, time\\\\ \\hline" } \
@@ -246,23 +249,20 @@ bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-lo
 	  END { print "\\end{tabular}\\\\[1ex] " cpu "; " cc "\\end{center}" }' \
 	  figures/data/bench-kepler-long-costs.tsv > doc/gen/bench-kepler-long.tex
 	$(B)/bench/bench-cubic-wp figures/data/cubic.tmp figures/data/cubic-needs.tmp
-	{ $(MACHINE); cat figures/data/cubic.tmp; } > figures/data/bench-cubic-wp.tsv
-	{ $(MACHINE); cat figures/data/cubic-needs.tmp; } | tee figures/data/bench-cubic-wp-needs.tsv
-	rm -f figures/data/cubic.tmp figures/data/cubic-needs.tmp
-	gnuplot -e "datadir='figures/data'; outdir='figures'" tangle/bench/bench-cubic-wp.gp
+	$(call STAMP,figures/data/cubic.tmp,figures/data/bench-cubic-wp.tsv)
+	$(call STAMP,figures/data/cubic-needs.tmp,figures/data/bench-cubic-wp-needs.tsv,show)
+	$(call PLOT,bench-cubic-wp)
 	$(call CHEAPEST_TABLE,figures/data/bench-cubic-wp-needs.tsv,doc/gen/bench-cubic-wp-needs.tex,error,10^{-4},10^{-6})
 	$(B)/bench/bench-threebody-wp figures/data/3b.tmp figures/data/3b-ref.tmp figures/data/3b-needs.tmp
-	{ $(MACHINE); cat figures/data/3b.tmp; } > figures/data/bench-threebody-wp.tsv
-	{ $(MACHINE); cat figures/data/3b-ref.tmp; } | tee figures/data/bench-threebody-wp-reference.tsv
-	{ $(MACHINE); cat figures/data/3b-needs.tmp; } | tee figures/data/bench-threebody-wp-needs.tsv
-	rm -f figures/data/3b.tmp figures/data/3b-ref.tmp figures/data/3b-needs.tmp
-	gnuplot -e "datadir='figures/data'; outdir='figures'" tangle/bench/bench-threebody-wp.gp
+	$(call STAMP,figures/data/3b.tmp,figures/data/bench-threebody-wp.tsv)
+	$(call STAMP,figures/data/3b-ref.tmp,figures/data/bench-threebody-wp-reference.tsv,show)
+	$(call STAMP,figures/data/3b-needs.tmp,figures/data/bench-threebody-wp-needs.tsv,show)
+	$(call PLOT,bench-threebody-wp)
 	$(call CHEAPEST_TABLE,figures/data/bench-threebody-wp-needs.tsv,doc/gen/bench-threebody-wp-needs.tex,state error,10^{-2},10^{-4})
 	$(B)/bench/bench-atlas figures/data/atlas.tmp figures/data/atlas-summary.tmp
-	{ $(MACHINE); cat figures/data/atlas.tmp; } > figures/data/bench-atlas.tsv
-	{ $(MACHINE); cat figures/data/atlas-summary.tmp; } | tee figures/data/bench-atlas-summary.tsv
-	rm -f figures/data/atlas.tmp figures/data/atlas-summary.tmp
-	gnuplot -e "datadir='figures/data'; outdir='figures'" tangle/bench/bench-atlas.gp
+	$(call STAMP,figures/data/atlas.tmp,figures/data/bench-atlas.tsv)
+	$(call STAMP,figures/data/atlas-summary.tmp,figures/data/bench-atlas-summary.tsv,show)
+	$(call PLOT,bench-atlas)
 	awk -F'\t' 'BEGIN { print "{\\footnotesize\\begin{longtable}{lllrrcr}" ; \
 	    print "problem & scheme & monitor & largest stable & smallest unstable & monotone & with transients\\\\ \\hline\\endhead" } \
 	  /^# cpu/ { cpu = substr($$0, 8) } /^# compiler/ { cc = substr($$0, 13) } /^#/ { next } \
@@ -296,18 +296,20 @@ memcheck: $(TEST_BIN) $(FIG_BIN)
 
 # --- install ----------------------------------------------------------------
 # make install PREFIX=... DESTDIR=...: the libraries, the public headers (in
-# include/avi), the pkg-config file and the woven PDF; make uninstall removes
-# exactly these (src/97-cli.nw).
+# include/avi), the pkg-config file, the avi program and its man page, and the
+# woven PDF; make uninstall removes exactly these (src/97-cli.nw).
 PREFIX  ?= /usr/local
 DESTDIR ?=
 VERSION  = $(shell sed -n 's/^\#define AVI_VERSION "\(.*\)"/\1/p' tangle/lib/avi-version.h)
 PUBLIC_H = tangle/lib/avi.h $(wildcard tangle/lib/avi-*.h)
 INSTALLED = lib/libavi.a lib/libavi.so lib/libavi.so.0 lib/libavi.so.$(VERSION) \
-	    lib/pkgconfig/avi.pc share/doc/avi/avi.pdf \
+	    lib/pkgconfig/avi.pc share/doc/avi/avi.pdf bin/avi share/man/man1/avi.1 \
 	    $(patsubst tangle/lib/%,include/avi/%,$(PUBLIC_H))
-install: $(B)/libavi.a $(B)/libavi.so doc/avi.pdf tangle/lib/avi.pc.in
+install: $(B)/libavi.a $(B)/libavi.so doc/avi.pdf tangle/lib/avi.pc.in $(CLI_BIN)
 	install -d $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include/avi \
-	  $(DESTDIR)$(PREFIX)/share/doc/avi
+	  $(DESTDIR)$(PREFIX)/share/doc/avi $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man1
+	install -m 755 $(B)/cli/avi $(DESTDIR)$(PREFIX)/bin/avi
+	install -m 644 tangle/cli/avi.1 $(DESTDIR)$(PREFIX)/share/man/man1/avi.1
 	install -m 644 $(B)/libavi.a $(DESTDIR)$(PREFIX)/lib/libavi.a
 	install -m 755 $(B)/libavi.so $(DESTDIR)$(PREFIX)/lib/libavi.so.$(VERSION)
 	ln -sf libavi.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/libavi.so.0
