@@ -28,21 +28,29 @@ LDFLAGS += -fsanitize=address,undefined
 B       := build-san
 endif
 
-.PHONY: all figures doc check record deps clean bench install uninstall memcheck cli
+.PHONY: all figures doc check record deps clean bench install install-doc uninstall memcheck cli
 all: figures doc cli
 
 # --- dependencies ---------------------------------------------------------
-# Debian 12 packages; installed with apt-get as root, with sudo otherwise.
-DEB_PKGS := noweb libgsl-dev gnuplot-nox texlive-latex-base \
-            texlive-latex-recommended texlive-fonts-recommended latexmk \
-            numdiff libcmocka-dev pkg-config
+# Debian 12 packages, the compilers included (a minimal Debian has neither cc
+# nor c++): gcc and libc6-dev build everything, g++ the C++ check of the
+# installed headers, groff-base formats the man page in its test.  Installed
+# with apt-get as root, with sudo otherwise; a user with neither gets the
+# command to run and exit 2.
+DEB_PKGS := gcc libc6-dev g++ groff-base noweb libgsl-dev gnuplot-nox \
+            texlive-latex-base texlive-latex-recommended texlive-fonts-recommended \
+            latexmk numdiff libcmocka-dev pkg-config
 deps $(B)/.deps:
 	@missing=$$(for p in $(DEB_PKGS); do \
 	    dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' \
 	    || echo $$p; done); \
 	if [ -n "$$missing" ]; then \
-	  echo "make: installing missing Debian packages:" $$missing; \
-	  if [ "$$(id -u)" = 0 ]; then sudo=; else sudo=sudo; fi; \
+	  missing=$$(echo $$missing); \
+	  if [ "$$(id -u)" = 0 ]; then sudo=; \
+	  elif command -v sudo > /dev/null; then sudo=sudo; \
+	  else echo "make: missing Debian packages; as root, run: apt-get install --no-install-recommends $$missing" >&2; \
+	    exit 2; fi; \
+	  echo "make: installing missing Debian packages: $$missing"; \
 	  $$sudo apt-get update -q; \
 	  DEBIAN_FRONTEND=noninteractive $$sudo apt-get install -y -q \
 	    --no-install-recommends $$missing; \
@@ -294,34 +302,49 @@ memcheck: $(TEST_BIN) $(FIG_BIN)
 	  else echo "not ok - $$t"; grep -v '^\[' $$tmp/err | head -20; fail=1; fi; \
 	done; rm -rf $$tmp; exit $$fail
 
-# --- install ----------------------------------------------------------------
-# make install PREFIX=... DESTDIR=...: the libraries, the public headers (in
-# include/avi), the pkg-config file, the avi program and its man page, and the
-# woven PDF; make uninstall removes exactly these (src/97-cli.nw).
+# --- install ---------------------------------------------------------------
+# make install PREFIX=... LIBDIR=... DESTDIR=...: the libraries, the public
+# headers (in include/avi), the pkg-config file, the avi program and its man
+# page, the licence, and the woven PDF if it has been built (make install-doc
+# builds and installs it); make uninstall removes exactly these
+# (src/97-cli.nw).  LIBDIR may be Debian's multiarch path,
+# e.g. LIBDIR=/usr/lib/x86_64-linux-gnu.  Installed as root with no DESTDIR,
+# the shared library is made known to the dynamic linker by $(LDCONFIG).
 PREFIX  ?= /usr/local
+LIBDIR  ?= $(PREFIX)/lib
 DESTDIR ?=
+LDCONFIG ?= ldconfig
 VERSION  = $(shell sed -n 's/^\#define AVI_VERSION "\(.*\)"/\1/p' tangle/lib/avi-version.h)
 PUBLIC_H = tangle/lib/avi.h $(wildcard tangle/lib/avi-*.h)
-INSTALLED = lib/libavi.a lib/libavi.so lib/libavi.so.0 lib/libavi.so.$(VERSION) \
-	    lib/pkgconfig/avi.pc share/doc/avi/avi.pdf bin/avi share/man/man1/avi.1 \
-	    $(patsubst tangle/lib/%,include/avi/%,$(PUBLIC_H))
-install: $(B)/libavi.a $(B)/libavi.so doc/avi.pdf tangle/lib/avi.pc.in $(CLI_BIN)
-	install -d $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include/avi \
-	  $(DESTDIR)$(PREFIX)/share/doc/avi $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man1
+DOCDIR   = $(PREFIX)/share/doc/avi
+INSTALLED = $(addprefix $(LIBDIR)/,libavi.a libavi.so libavi.so.0 libavi.so.$(VERSION) \
+	      pkgconfig/avi.pc) \
+	    $(addprefix $(PREFIX)/,bin/avi share/man/man1/avi.1 \
+	      $(patsubst tangle/lib/%,include/avi/%,$(PUBLIC_H))) \
+	    $(DOCDIR)/avi.pdf $(DOCDIR)/COPYING
+install: $(B)/libavi.a $(B)/libavi.so tangle/lib/avi.pc.in $(CLI_BIN)
+	install -d $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(PREFIX)/include/avi \
+	  $(DESTDIR)$(DOCDIR) $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man1
 	install -m 755 $(B)/cli/avi $(DESTDIR)$(PREFIX)/bin/avi
 	install -m 644 tangle/cli/avi.1 $(DESTDIR)$(PREFIX)/share/man/man1/avi.1
-	install -m 644 $(B)/libavi.a $(DESTDIR)$(PREFIX)/lib/libavi.a
-	install -m 755 $(B)/libavi.so $(DESTDIR)$(PREFIX)/lib/libavi.so.$(VERSION)
-	ln -sf libavi.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/libavi.so.0
-	ln -sf libavi.so.0 $(DESTDIR)$(PREFIX)/lib/libavi.so
+	install -m 644 $(B)/libavi.a $(DESTDIR)$(LIBDIR)/libavi.a
+	install -m 755 $(B)/libavi.so $(DESTDIR)$(LIBDIR)/libavi.so.$(VERSION)
+	ln -sf libavi.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libavi.so.0
+	ln -sf libavi.so.0 $(DESTDIR)$(LIBDIR)/libavi.so
 	install -m 644 $(PUBLIC_H) $(DESTDIR)$(PREFIX)/include/avi/
-	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' tangle/lib/avi.pc.in \
-	  > $(DESTDIR)$(PREFIX)/lib/pkgconfig/avi.pc
-	install -m 644 doc/avi.pdf $(DESTDIR)$(PREFIX)/share/doc/avi/avi.pdf
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@LIBDIR@|$(LIBDIR)|' -e 's|@VERSION@|$(VERSION)|' \
+	  tangle/lib/avi.pc.in > $(DESTDIR)$(LIBDIR)/pkgconfig/avi.pc
+	install -m 644 COPYING $(DESTDIR)$(DOCDIR)/COPYING
+	if [ -f doc/avi.pdf ]; then install -m 644 doc/avi.pdf $(DESTDIR)$(DOCDIR)/avi.pdf; fi
+	if [ -z "$(DESTDIR)" ] && [ "$$(id -u)" = 0 ]; then $(LDCONFIG); fi
+
+install-doc: doc/avi.pdf
+	install -d $(DESTDIR)$(DOCDIR)
+	install -m 644 doc/avi.pdf $(DESTDIR)$(DOCDIR)/avi.pdf
 
 uninstall:
-	rm -f $(addprefix $(DESTDIR)$(PREFIX)/,$(INSTALLED))
-	-rmdir $(DESTDIR)$(PREFIX)/include/avi $(DESTDIR)$(PREFIX)/share/doc/avi 2>/dev/null
+	rm -f $(addprefix $(DESTDIR),$(INSTALLED))
+	-rmdir $(DESTDIR)$(PREFIX)/include/avi $(DESTDIR)$(DOCDIR) 2>/dev/null
 
 # --- tests ------------------------------------------------------------------
 check: $(TEST_BIN) $(CLI_BIN) $(FIGS:%=figures/data/%.summary) figures

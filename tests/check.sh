@@ -1,17 +1,30 @@
 #!/usr/bin/env bash
 # The test driver of `make check`:  tests/check.sh BUILD_DIR SRC.nw...
-# Runs four kinds of check, prints one "ok"/"not ok" line per check, and
-# closes with the line "N passed, N failed".
+# Runs five kinds of check, prints one "ok"/"not ok" line per check, and
+# closes with the line "N passed, N failed, N skipped".
+#
+# A check that could not run says so in TAP's way, "ok - what # SKIP why",
+# and is counted as skipped, never as passed.  Under CI (CI set and not
+# "false"), where `make` has installed everything the tests use, a skip is
+# a failure unless its reason says why CI may skip it, with the words
+# "ci-ok:" and the justification.
 set -u
 cd "$(dirname "$0")/.."
 build=$1; shift
-pass=0; fail=0
+pass=0; fail=0; skip=0
+in_ci=; case ${CI:-} in ''|false|0) ;; *) in_ci=1;; esac
 count() {   # read TAP-like lines on stdin, echo them, count them
   while IFS= read -r line; do
-    echo "$line"
     case $line in
-      'ok '*) pass=$((pass + 1));;
-      'not ok'*) fail=$((fail + 1));;
+      'ok '*'# SKIP'*|'ok '*'# skip'*)
+        if [ -n "$in_ci" ] && [[ $line != *ci-ok:* ]]; then
+          echo "not ok${line#ok} (a skip under CI)"; fail=$((fail + 1))
+        else
+          echo "$line"; skip=$((skip + 1))
+        fi;;
+      'ok '*) echo "$line"; pass=$((pass + 1));;
+      'not ok'*) echo "$line"; fail=$((fail + 1));;
+      *) echo "$line";;
     esac
   done
 }
@@ -21,7 +34,7 @@ count() {   # read TAP-like lines on stdin, echo them, count them
 #    shows up here as a name that is not a path the build knows.
 echo "# root chunks"
 odd=$(noroots "$@" | sed -e 's/^<<//' -e 's/>>$//' | grep -Ev \
-  '^(lib/[a-z0-9-]+\.[ch]|lib/avi\.pc\.in|examples/[a-z0-9-]+\.c|cli/avi\.(c|1)|figkit/[a-z0-9-]+\.[ch]|fig/[a-z0-9-]+\.(c|gp)|test/test-[a-z0-9-]+\.(c|sh)|golden/[a-z0-9-]+\.tol|bench/[a-z0-9-]+\.(c|gp))$')
+  '^(lib/[a-z0-9-]+\.[ch]|lib/avi\.pc\.in|examples/[a-z0-9-]+\.(c|cc)|cli/avi\.(c|1)|figkit/[a-z0-9-]+\.[ch]|fig/[a-z0-9-]+\.(c|gp)|test/test-[a-z0-9-]+\.(c|sh)|golden/[a-z0-9-]+\.tol|bench/[a-z0-9-]+\.(c|gp))$')
 if [ -z "$odd" ]; then
   count <<< "ok - every root chunk names an output file"
 else
@@ -65,5 +78,22 @@ done
 echo "# golden files"
 count < <(tests/golden.sh compare)
 
-echo "$pass passed, $fail failed"
+# 5. The build itself: a user who is neither root nor has sudo, missing a
+#    package, gets the apt-get command to run and exit 2 (run as nobody when
+#    this runs as root; with a PATH that has no sudo on it).
+echo "# the build"
+deps_test() {
+  local tmp rc out
+  tmp=$(mktemp -d) && chmod 755 "$tmp" && mkdir -m 777 "$tmp/b" "$tmp/bin" || return 1
+  for c in dpkg-query grep id mkdir touch bash; do ln -s "$(command -v "$c")" "$tmp/bin/$c"; done
+  as=(); [ "$(id -u)" = 0 ] && as=(setpriv --reuid=65534 --regid=65534 --clear-groups)
+  out=$("${as[@]}" env PATH="$tmp/bin" "$(command -v make)" -s --no-print-directory deps \
+        B="$tmp/b" DEB_PKGS="avi-no-such-package" 2>&1); rc=$?
+  rm -rf "$tmp"
+  if [ $rc = 2 ] && grep -q "^make: missing Debian packages; as root, run: apt-get install .*avi-no-such-package" <<< "$out"
+  then echo "ok - without root or sudo, make names the apt-get command and exits 2"
+  else echo "not ok - without root or sudo, make exits $rc: $out"; fi
+}
+count < <(deps_test)
+echo "$pass passed, $fail failed, $skip skipped"
 [ "$fail" -eq 0 ]
