@@ -236,13 +236,14 @@ bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-lo
 	$(call STAMP,figures/data/wp.tmp,figures/data/bench-kepler-wp.tsv)
 	$(call STAMP,figures/data/wp-needs.tmp,figures/data/bench-kepler-wp-needs.tsv)
 	$(call PLOT,bench-kepler-wp)
-	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{lrrrr}" ; \
-	    print "method & \\multicolumn{2}{c}{error $$10^{-4}$$} & \\multicolumn{2}{c}{error $$10^{-6}$$}\\\\" ; \
-	    print " & forces & s & forces & s\\\\ \\hline" } \
-	  /^# cpu/ { cpu = substr($$0, 8) } /^# compiler/ { cc = substr($$0, 13) } /^#/ { next } \
-	  { if (!($$2 in row)) { order[++n] = $$2; row[$$2] = $$2 } \
+	awk -F'\t' '/^# cpu/ { cpu = substr($$0, 8) } /^# compiler/ { cc = substr($$0, 13) } /^#/ { next } \
+	  { if (!($$1 in seen)) { seen[$$1] = 1; tg[++nt] = $$1 } \
+	    if (!($$2 in row)) { order[++n] = $$2; row[$$2] = $$2 } \
 	    row[$$2] = row[$$2] " & " ($$3 == "nan" ? "--" : $$3) " & " ($$4 == "nan" ? "--" : $$4) } \
-	  END { for (i = 1; i <= n; i++) print row[order[i]] "\\\\"; \
+	  END { printf "\\begin{center}\\footnotesize\\begin{tabular}{l"; for (i = 1; i <= nt; i++) printf "rr"; print "}"; \
+	    printf "error"; for (i = 1; i <= nt; i++) printf " & \\multicolumn{2}{c}{%s}", tg[i]; print "\\\\"; \
+	    printf "method"; for (i = 1; i <= nt; i++) printf " & forces & s"; print "\\\\ \\hline"; \
+	    for (i = 1; i <= n; i++) print row[order[i]] "\\\\"; \
 	    print "\\end{tabular}\\\\[1ex] " cpu "; " cc "\\end{center}" }' \
 	  figures/data/bench-kepler-wp-needs.tsv > doc/gen/bench-kepler-wp-needs.tex
 	$(B)/bench/bench-kepler-long figures/data/long.tmp figures/data/long-costs.tmp
