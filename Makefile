@@ -280,6 +280,12 @@ bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-lo
 	$(B)/bench/bench-threebody-wp figures/data/3b.tmp figures/data/3b-ref.tmp figures/data/3b-needs.tmp
 	$(call STAMP,figures/data/3b.tmp,figures/data/bench-threebody-wp.tsv)
 	$(call STAMP,figures/data/3b-ref.tmp,figures/data/bench-threebody-wp-reference.tsv,show)
+	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{llrlrr}" ; \
+	    print "check & role & forces & against & distance at $$t=10$$ & at $$t=30$$\\\\ \\hline" } \
+	  /^\# cpu/ { cpu = substr($$0, 8) } /^\# compiler/ { cc = substr($$0, 13) } /^\#/ || $$2 == "summary" { next } \
+	  { printf "\\texttt{%s} & %s & %s & \\texttt{%s} & %s & %s\\\\\n", $$1, $$2, $$6, $$7, $$8, $$9 } \
+	  END { print "\\end{tabular}\\\\[1ex] " cpu "; " cc "\\end{center}" }' \
+	  figures/data/bench-threebody-wp-reference.tsv > doc/gen/bench-threebody-wp-reference.tex
 	$(call STAMP,figures/data/3b-needs.tmp,figures/data/bench-threebody-wp-needs.tsv,show)
 	$(call PLOT,bench-threebody-wp)
 	$(call CHEAPEST_TABLE,figures/data/bench-threebody-wp-needs.tsv,doc/gen/bench-threebody-wp-needs.tex,state error,10^{-2},10^{-4})
