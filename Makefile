@@ -74,11 +74,11 @@ tangle/files.mk: $(NW) | $(B)/.deps
 	  notangle $$L -R"$$r" $(NW) > tangle/.tmp; \
 	  cpif tangle/$$r < tangle/.tmp; \
 	done; rm -f tangle/.tmp; \
-	for f in $$(cd tangle && find lib figkit fig test golden bench examples cli -type f 2>/dev/null); do \
+	for f in $$(cd tangle && find lib ref figkit fig test golden bench examples cli -type f 2>/dev/null); do \
 	  grep -qxF "$$f" <<< "$$roots" || { echo "removing stale tangle/$$f"; rm -f tangle/$$f; }; \
 	done; \
 	{ echo "ROOTS := $$(echo $$roots)"; \
-	  for kind in lib figkit fig test bench cli; do \
+	  for kind in lib ref figkit fig test bench cli; do \
 	    echo "$${kind^^}_C := $$(echo "$$roots" | grep "^$$kind/.*\.c$$" | sed 's|^|tangle/|' | tr '\n' ' ')"; done; \
 	  echo "GP := $$(echo "$$roots" | grep '^fig/.*\.gp$$' | sed 's|^|tangle/|' | tr '\n' ' ')"; \
 	} > $@
@@ -89,7 +89,11 @@ include tangle/files.mk
 endif
 
 # --- building ---------------------------------------------------------------
-INC      := -Itangle/lib -Itangle/figkit
+# GCC's quadmath.h lives in GCC's own header directory, which Clang does not
+# search; -idirafter adds it after every other, so that Clang takes only
+# quadmath.h from there (for GCC it is a directory it already searches).
+GCC_INC  := $(shell gcc -print-file-name=include 2>/dev/null)
+INC      := -Itangle/lib -Itangle/ref -Itangle/figkit $(if $(GCC_INC),-idirafter $(GCC_INC))
 LIB_O    := $(patsubst tangle/%.c,$(B)/%.o,$(LIB_C))
 FIGKIT_O := $(patsubst tangle/%.c,$(B)/%.o,$(FIGKIT_C))
 FIGS     := $(patsubst tangle/fig/%.gp,%,$(GP))
@@ -132,6 +136,17 @@ $(B)/bench/bench-atlas.o: CFLAGS += -fopenmp
 $(B)/bench/bench-atlas: LDFLAGS += -fopenmp
 $(B)/bench/bench-atlas: $(FIGKIT_O)
 
+# The reference solutions in binary128 (src/85-references.nw): an archive of
+# their own, not part of libavi, linked with GCC's libquadmath (Debian:
+# libgcc-12-dev, which gcc depends on) only into the programs that use them.
+REF_O    := $(patsubst tangle/%.c,$(B)/%.o,$(REF_C))
+QUAD_BIN := $(B)/test/test-ref $(B)/test/test-after $(B)/bench/bench-kepler-wp \
+            $(B)/bench/bench-threebody-wp
+$(B)/libavi-ref.a: $(REF_O)
+	rm -f $@ && ar rcs $@ $^
+$(QUAD_BIN): $(B)/libavi-ref.a
+$(QUAD_BIN): LDLIBS += -lquadmath
+
 # the command-line program avi (src/97-cli.nw)
 cli: $(CLI_BIN)
 $(CLI_BIN): $(B)/cli/%: $(B)/cli/%.o $(B)/libavi.a
@@ -141,7 +156,7 @@ $(TEST_BIN): $(B)/test/%: $(B)/test/%.o $(B)/libavi.a
 	$(CC) $(CFLAGS) $(LDFLAGS) $^ -lcmocka $(LDLIBS) -o $@
 
 $(BENCH_BIN): $(B)/bench/%: $(B)/bench/%.o $(B)/libavi.a
-	$(CC) $(CFLAGS) $(LDFLAGS) $(filter %.o,$^) $(B)/libavi.a $(LDLIBS) -o $@
+	$(CC) $(CFLAGS) $(LDFLAGS) $(filter %.o %/libavi-ref.a,$^) $(B)/libavi.a $(LDLIBS) -o $@
 
 -include $(wildcard $(B)/*/*.d $(B)/pic/*/*.d)
 
@@ -265,6 +280,12 @@ bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-lo
 	$(B)/bench/bench-threebody-wp figures/data/3b.tmp figures/data/3b-ref.tmp figures/data/3b-needs.tmp
 	$(call STAMP,figures/data/3b.tmp,figures/data/bench-threebody-wp.tsv)
 	$(call STAMP,figures/data/3b-ref.tmp,figures/data/bench-threebody-wp-reference.tsv,show)
+	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{llrlrr}" ; \
+	    print "check & role & forces & against & distance at $$t=10$$ & at $$t=30$$\\\\ \\hline" } \
+	  /^\# cpu/ { cpu = substr($$0, 8) } /^\# compiler/ { cc = substr($$0, 13) } /^\#/ || $$2 == "summary" { next } \
+	  { printf "\\texttt{%s} & %s & %s & \\texttt{%s} & %s & %s\\\\\n", $$1, $$2, $$6, $$7, $$8, $$9 } \
+	  END { print "\\end{tabular}\\\\[1ex] " cpu "; " cc "\\end{center}" }' \
+	  figures/data/bench-threebody-wp-reference.tsv > doc/gen/bench-threebody-wp-reference.tex
 	$(call STAMP,figures/data/3b-needs.tmp,figures/data/bench-threebody-wp-needs.tsv,show)
 	$(call PLOT,bench-threebody-wp)
 	$(call CHEAPEST_TABLE,figures/data/bench-threebody-wp-needs.tsv,doc/gen/bench-threebody-wp-needs.tex,state error,10^{-2},10^{-4})
