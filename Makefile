@@ -141,7 +141,7 @@ $(B)/bench/bench-atlas: $(FIGKIT_O)
 # libgcc-12-dev, which gcc depends on) only into the programs that use them.
 REF_O    := $(patsubst tangle/%.c,$(B)/%.o,$(REF_C))
 QUAD_BIN := $(B)/test/test-ref $(B)/test/test-after $(B)/bench/bench-kepler-wp \
-            $(B)/bench/bench-threebody-wp
+            $(B)/bench/bench-threebody-wp $(B)/bench/bench-targets
 $(B)/libavi-ref.a: $(REF_O)
 	rm -f $@ && ar rcs $@ $^
 $(QUAD_BIN): $(B)/libavi-ref.a
@@ -307,6 +307,19 @@ bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-lo
 	  { printf "%s & %s & %s & %s & %s & %s & %s & %s\\\\\n", $$1, $$2, $$3, $$4, $$5, $$6, $$7, $$8 } \
 	  END { print "\\end{tabular}\\\\[1ex] " note "; " cpu "; " cc "\\end{center}" }' \
 	  figures/data/bench-pendulum.tsv > doc/gen/bench-pendulum.tex
+	$(B)/bench/bench-targets figures/data/targets.tmp
+	$(call STAMP,figures/data/targets.tmp,figures/data/bench-targets.tsv,show)
+	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{lrrrrl}" ; \
+	    print "method & parameter & forces & error & s & ratio to rk8pd, median (min--max)\\\\ \\hline" } \
+	  /^# largest/ { note = substr($$0, 3) } /^# cpu/ { cpu = substr($$0, 8) } \
+	  /^# compiler/ { cc = substr($$0, 13) } /^#/ { next } \
+	  { g = $$1 " " $$2 " " $$3; if (g != last) { last = g; \
+	      printf "\\multicolumn{6}{l}{\\emph{%s to $$t_f=%s$$, error %s}}\\\\\n", $$1, $$2, $$3 } \
+	    met = $$5 == 1; r = ($$11 == "nan" || $$4 == "rk8pd") ? "" : $$11 " (" $$10 "--" $$12 ")"; \
+	    printf "\\quad %s & %s & %s & %s & %s & %s\\\\\n", $$4, (met ? $$6 : "--"), (met ? $$7 : "--"), \
+	      $$8 (met ? "" : " (best)"), (met ? $$9 : "--"), r } \
+	  END { print "\\end{tabular}\\\\[1ex] " note "; " cpu "; " cc "\\end{center}" }' \
+	  figures/data/bench-targets.tsv > doc/gen/bench-targets.tex
 	rm -f doc/avi.pdf && $(MAKE) --no-print-directory doc
 
 # --- memcheck ---------------------------------------------------------------
