@@ -123,6 +123,7 @@ $(FIG_BIN): $(B)/fig/%: $(B)/fig/%.o $(FIGKIT_O) $(B)/libavi.a
 # rf-fig1 computes its grid of runs on all cores with OpenMP.
 $(B)/fig/rf-fig1.o: CFLAGS += -fopenmp
 $(B)/fig/rf-fig1: LDFLAGS += -fopenmp
+$(B)/bench/bench-steps: LDFLAGS += -pthread
 $(B)/bench/bench-kepler-wp.o: CFLAGS += -fopenmp
 $(B)/bench/bench-kepler-wp: LDFLAGS += -fopenmp
 $(B)/bench/bench-kepler-long.o: CFLAGS += -fopenmp
@@ -190,7 +191,7 @@ doc/gen/woven.tex: $(NW) | $(B)/.deps
 # "key value" of figures/data/<id>.summary becomes \val{<id>}{key} (three
 # significant digits) and \valfull{<id>}{key} (six), exponents as powers of 10
 # below 1e-3.
-doc/gen/values.tex: $(FIGS:%=figures/data/%.summary)
+doc/gen/values.tex: $(FIGS:%=figures/data/%.summary) doc/gen/bench-steps.summary
 	@mkdir -p doc/gen
 	awk 'function fmt(v, d,  s, m, e) { \
 	       if (v == int(v) && v < 1e15 && v > -1e15) return sprintf("%d", v); \
@@ -204,7 +205,8 @@ doc/gen/values.tex: $(FIGS:%=figures/data/%.summary)
 	               printf "\\expandafter\\def\\csname valfull:%s:%s\\endcsname{%s}\n", id, $$1, fmt($$2, 6) }' \
 	  $^ > $@
 
-doc/avi.pdf: doc/avi.tex doc/gen/woven.tex doc/gen/values.tex $(FIGS:%=figures/%.pdf)
+doc/avi.pdf: doc/avi.tex doc/gen/woven.tex doc/gen/values.tex $(FIGS:%=figures/%.pdf) \
+	     doc/gen/bench.stamp
 	cd doc && latexmk -pdf -interaction=nonstopmode -halt-on-error \
 	  -outdir=gen -quiet avi.tex > gen/latexmk.out 2>&1 \
 	  || { tail -40 gen/latexmk.out; false; }
@@ -223,14 +225,13 @@ MACHINE = echo "\# cpu: $$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | 
 # temporary output, the table, and "show" to print it); a bench chart is
 # drawn from figures/data into figures (PLOT).
 STAMP = { $(MACHINE); cat $(1); } > $(2) && rm -f $(1)$(if $(3), && cat $(2))
-PLOT  = gnuplot -e "datadir='figures/data'; outdir='figures'" tangle/bench/$(1).gp
 # The cheapest run of each method for two targets, as a LaTeX table:
 # $(1) the TSV (target, method, step, forces, seconds, ...), $(2) the table,
 # $(3) what the targets bound, $(4) and $(5) the two targets.
 CHEAPEST_TABLE = awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{lrrrrrr}" ; \
 	    print "method & \\multicolumn{3}{c}{$(3) $$$(4)$$} & \\multicolumn{3}{c}{$(3) $$$(5)$$}\\\\" ; \
 	    print " & step & forces & s & step & forces & s\\\\ \\hline" } \
-	  /^\# cpu/ { cpu = substr($$0, 8) } /^\# compiler/ { cc = substr($$0, 13) } /^\#/ { next } \
+	  /^\043 cpu/ { cpu = substr($$0, 8) } /^\043 compiler/ { cc = substr($$0, 13) } /^\043/ { next } \
 	  { if (!($$2 in row)) { order[++n] = $$2; row[$$2] = $$2 } \
 	    for (i = 3; i <= 5; i++) row[$$2] = row[$$2] " & " ($$i == "nan" || $$i == "-" ? "--" : $$i) } \
 	  END { for (i = 1; i <= n; i++) print row[order[i]] "\\\\"; \
@@ -239,17 +240,57 @@ CHEAPEST_TABLE = awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabula
 bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-long.gp tangle/bench/bench-cubic-wp.gp \
 	  tangle/bench/bench-threebody-wp.gp tangle/bench/bench-atlas.gp
 	@mkdir -p figures/data doc/gen
+	cut -d' ' -f1-3 /proc/loadavg > figures/data/load-start.txt
 	{ $(MACHINE); $(B)/bench/bench-steps; } > figures/data/bench-steps.tsv
+	{ $(MACHINE); $(B)/bench/bench-steps --load 2; } > figures/data/bench-steps-loaded.tsv
 	cat figures/data/bench-steps.tsv
-	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{llrrrrl}" ; \
-	    print "problem & scheme & ns/step & ratio to Verlet & forces/step & solver iterations/step & target\\\\ \\hline" } \
-	  /^# cpu/ { cpu = substr($$0, 8) } /^# compiler/ { cc = substr($$0, 13) } \
-	  /^#/ { next } { printf "%s & %s & %s & %s & %s & %s & %s\\\\\n", $$1, $$2, $$3, $$4, $$5, $$6, ($$9 == "-" ? "" : $$9) } \
-	  END { print "\\end{tabular}\\\\[1ex] medians of 7 runs of $$10^6$$ steps; " cpu "; " cc "\\end{center}" }' \
-	  figures/data/bench-steps.tsv > doc/gen/bench-steps.tex
 	$(B)/bench/bench-kepler-wp figures/data/wp.tmp figures/data/wp-needs.tmp
 	$(call STAMP,figures/data/wp.tmp,figures/data/bench-kepler-wp.tsv)
 	$(call STAMP,figures/data/wp-needs.tmp,figures/data/bench-kepler-wp-needs.tsv)
+	$(B)/bench/bench-kepler-long figures/data/long.tmp figures/data/long-costs.tmp
+	$(call STAMP,figures/data/long.tmp,figures/data/bench-kepler-long.tsv)
+	$(call STAMP,figures/data/long-costs.tmp,figures/data/bench-kepler-long-costs.tsv,show)
+	$(B)/bench/bench-cubic-wp figures/data/cubic.tmp figures/data/cubic-needs.tmp
+	$(call STAMP,figures/data/cubic.tmp,figures/data/bench-cubic-wp.tsv)
+	$(call STAMP,figures/data/cubic-needs.tmp,figures/data/bench-cubic-wp-needs.tsv,show)
+	$(B)/bench/bench-threebody-wp figures/data/3b.tmp figures/data/3b-ref.tmp figures/data/3b-needs.tmp
+	$(call STAMP,figures/data/3b.tmp,figures/data/bench-threebody-wp.tsv)
+	$(call STAMP,figures/data/3b-ref.tmp,figures/data/bench-threebody-wp-reference.tsv,show)
+	$(call STAMP,figures/data/3b-needs.tmp,figures/data/bench-threebody-wp-needs.tsv,show)
+	$(B)/bench/bench-atlas figures/data/atlas.tmp figures/data/atlas-summary.tmp
+	$(call STAMP,figures/data/atlas.tmp,figures/data/bench-atlas.tsv)
+	$(call STAMP,figures/data/atlas-summary.tmp,figures/data/bench-atlas-summary.tsv,show)
+	{ $(MACHINE); $(B)/bench/bench-pendulum; } | tee figures/data/bench-pendulum.tsv
+	$(B)/bench/bench-targets figures/data/targets.tmp
+	$(call STAMP,figures/data/targets.tmp,figures/data/bench-targets.tsv,show)
+	@mkdir -p $(REC)
+	cp $(BENCH_TSV:%=figures/data/%.tsv) $(REC)/
+	{ $(MACHINE); echo "# date: $$(date -u '+%F %T UTC')"; \
+	  echo "# load average (1, 5, 15 min) at the start: $$(cat figures/data/load-start.txt)"; \
+	  echo "# load average (1, 5, 15 min) at the end: $$(cut -d' ' -f1-3 /proc/loadavg)"; \
+	  } > $(REC)/machine.txt
+	rm -f doc/avi.pdf && $(MAKE) --no-print-directory doc
+
+# The record of the last make bench, committed: a plain make typesets its
+# tables and draws its charts from it (doc/gen/bench.stamp), and the text
+# quotes it through \val{bench-steps}{...} (doc/gen/bench-steps.summary).
+REC       := doc/bench
+BENCH_TSV := bench-steps bench-steps-loaded bench-kepler-wp bench-kepler-wp-needs \
+             bench-kepler-long bench-kepler-long-costs bench-cubic-wp bench-cubic-wp-needs \
+             bench-threebody-wp bench-threebody-wp-reference bench-threebody-wp-needs \
+             bench-atlas bench-atlas-summary bench-pendulum bench-targets
+BENCH_GP  := $(patsubst %,tangle/bench/%.gp,bench-kepler-wp bench-kepler-long bench-cubic-wp \
+             bench-threebody-wp bench-atlas)
+PLOT  = gnuplot -e "datadir='$(REC)'; outdir='figures'" tangle/bench/$(1).gp
+doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP)
+	@mkdir -p doc/gen figures
+	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{llrrrrrl}" ; \
+	    print "problem & scheme & ns/step & ratio & min--max & loaded & forces/step & target\\\\ \\hline" } \
+	  FNR == 1 { file++ } /^# cpu/ { cpu = substr($$0, 8) } /^# compiler/ { cc = substr($$0, 13) } /^#/ { next } \
+	  file == 1 { loaded[$$1 " " $$2] = $$4; next } \
+	  { printf "%s & %s & %s & %s & %s--%s & %s & %s & %s\\\\\n", $$1, $$2, $$3, $$4, $$5, $$6, loaded[$$1 " " $$2], $$7, ($$9 == "-" ? "" : $$9) } \
+	  END { print "\\end{tabular}\\\\[1ex] per-thread processor time, 7 repetitions of $$10^6$$ steps, ratios to Verlet within each repetition (median, min--max); loaded: the median ratio with two spinning threads; " cpu "; " cc "\\end{center}" }' \
+	  $(REC)/bench-steps-loaded.tsv $(REC)/bench-steps.tsv > doc/gen/bench-steps.tex
 	$(call PLOT,bench-kepler-wp)
 	awk -F'\t' '/^# cpu/ { cpu = substr($$0, 8) } /^# compiler/ { cc = substr($$0, 13) } /^#/ { next } \
 	  { if (!($$1 in seen)) { seen[$$1] = 1; tg[++nt] = $$1 } \
@@ -260,10 +301,7 @@ bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-lo
 	    printf "method"; for (i = 1; i <= nt; i++) printf " & forces & s"; print "\\\\ \\hline"; \
 	    for (i = 1; i <= n; i++) print row[order[i]] "\\\\"; \
 	    print "\\end{tabular}\\\\[1ex] " cpu "; " cc "\\end{center}" }' \
-	  figures/data/bench-kepler-wp-needs.tsv > doc/gen/bench-kepler-wp-needs.tex
-	$(B)/bench/bench-kepler-long figures/data/long.tmp figures/data/long-costs.tmp
-	$(call STAMP,figures/data/long.tmp,figures/data/bench-kepler-long.tsv)
-	$(call STAMP,figures/data/long-costs.tmp,figures/data/bench-kepler-long-costs.tsv,show)
+	  $(REC)/bench-kepler-wp-needs.tsv > doc/gen/bench-kepler-wp-needs.tex
 	$(call PLOT,bench-kepler-long)
 	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{rrrrrrrrr}" ; \
 	    print "$$\\Delta s$$ & periods & error & \\multicolumn{2}{c}{av-dae} & tolerance & \\multicolumn{2}{c}{rk8pd} & ratio\\\\" ; \
@@ -271,44 +309,31 @@ bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-lo
 	  /^# cpu/ { cpu = substr($$0, 8) } /^# compiler/ { cc = substr($$0, 13) } /^#/ { next } \
 	  { printf "%s & %s & %s & %s & %s & %s & %s & %s & %s, %s\\\\\n", $$1, $$2, $$3, $$4, $$5, $$6, $$8, $$9, $$10, $$11 } \
 	  END { print "\\end{tabular}\\\\[1ex] " cpu "; " cc "\\end{center}" }' \
-	  figures/data/bench-kepler-long-costs.tsv > doc/gen/bench-kepler-long.tex
-	$(B)/bench/bench-cubic-wp figures/data/cubic.tmp figures/data/cubic-needs.tmp
-	$(call STAMP,figures/data/cubic.tmp,figures/data/bench-cubic-wp.tsv)
-	$(call STAMP,figures/data/cubic-needs.tmp,figures/data/bench-cubic-wp-needs.tsv,show)
+	  $(REC)/bench-kepler-long-costs.tsv > doc/gen/bench-kepler-long.tex
 	$(call PLOT,bench-cubic-wp)
-	$(call CHEAPEST_TABLE,figures/data/bench-cubic-wp-needs.tsv,doc/gen/bench-cubic-wp-needs.tex,error,10^{-4},10^{-6})
-	$(B)/bench/bench-threebody-wp figures/data/3b.tmp figures/data/3b-ref.tmp figures/data/3b-needs.tmp
-	$(call STAMP,figures/data/3b.tmp,figures/data/bench-threebody-wp.tsv)
-	$(call STAMP,figures/data/3b-ref.tmp,figures/data/bench-threebody-wp-reference.tsv,show)
+	$(call CHEAPEST_TABLE,$(REC)/bench-cubic-wp-needs.tsv,doc/gen/bench-cubic-wp-needs.tex,error,10^{-4},10^{-6})
 	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{llrlrr}" ; \
 	    print "check & role & forces & against & distance at $$t=10$$ & at $$t=30$$\\\\ \\hline" } \
-	  /^\# cpu/ { cpu = substr($$0, 8) } /^\# compiler/ { cc = substr($$0, 13) } /^\#/ || $$2 == "summary" { next } \
+	  /^# cpu/ { cpu = substr($$0, 8) } /^# compiler/ { cc = substr($$0, 13) } /^#/ || $$2 == "summary" { next } \
 	  { printf "\\texttt{%s} & %s & %s & \\texttt{%s} & %s & %s\\\\\n", $$1, $$2, $$6, $$7, $$8, $$9 } \
 	  END { print "\\end{tabular}\\\\[1ex] " cpu "; " cc "\\end{center}" }' \
-	  figures/data/bench-threebody-wp-reference.tsv > doc/gen/bench-threebody-wp-reference.tex
-	$(call STAMP,figures/data/3b-needs.tmp,figures/data/bench-threebody-wp-needs.tsv,show)
+	  $(REC)/bench-threebody-wp-reference.tsv > doc/gen/bench-threebody-wp-reference.tex
 	$(call PLOT,bench-threebody-wp)
-	$(call CHEAPEST_TABLE,figures/data/bench-threebody-wp-needs.tsv,doc/gen/bench-threebody-wp-needs.tex,state error,10^{-2},10^{-4})
-	$(B)/bench/bench-atlas figures/data/atlas.tmp figures/data/atlas-summary.tmp
-	$(call STAMP,figures/data/atlas.tmp,figures/data/bench-atlas.tsv)
-	$(call STAMP,figures/data/atlas-summary.tmp,figures/data/bench-atlas-summary.tsv,show)
+	$(call CHEAPEST_TABLE,$(REC)/bench-threebody-wp-needs.tsv,doc/gen/bench-threebody-wp-needs.tex,state error,10^{-2},10^{-4})
 	$(call PLOT,bench-atlas)
 	awk -F'\t' 'BEGIN { print "{\\footnotesize\\begin{longtable}{lllrrcr}" ; \
 	    print "problem & scheme & monitor & largest stable & smallest unstable & monotone & with transients\\\\ \\hline\\endhead" } \
 	  /^# cpu/ { cpu = substr($$0, 8) } /^# compiler/ { cc = substr($$0, 13) } /^#/ { next } \
 	  { printf "%s & %s & %s & %s & %s & %s & %s\\\\\n", $$1, $$2, $$3, $$4, $$5, $$6, $$7 } \
 	  END { print "\\end{longtable}}\\par\\noindent{\\small a dash: no such run in the strip; " cpu "; " cc "}\\par" }' \
-	  figures/data/bench-atlas-summary.tsv > doc/gen/bench-atlas.tex
-	{ $(MACHINE); $(B)/bench/bench-pendulum; } | tee figures/data/bench-pendulum.tsv
+	  $(REC)/bench-atlas-summary.tsv > doc/gen/bench-atlas.tex
 	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{lrrrrrrr}" ; \
 	    print "scheme & step & status & $$t$$ reached & steps & evaluations & max.\\ energy error & s\\\\ \\hline" } \
 	  /^# order/ { note = substr($$0, 3) } /^# cpu/ { cpu = substr($$0, 8) } \
 	  /^# compiler/ { cc = substr($$0, 13) } /^#/ { next } \
 	  { printf "%s & %s & %s & %s & %s & %s & %s & %s\\\\\n", $$1, $$2, $$3, $$4, $$5, $$6, $$7, $$8 } \
 	  END { print "\\end{tabular}\\\\[1ex] " note "; " cpu "; " cc "\\end{center}" }' \
-	  figures/data/bench-pendulum.tsv > doc/gen/bench-pendulum.tex
-	$(B)/bench/bench-targets figures/data/targets.tmp
-	$(call STAMP,figures/data/targets.tmp,figures/data/bench-targets.tsv,show)
+	  $(REC)/bench-pendulum.tsv > doc/gen/bench-pendulum.tex
 	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{lrrrrl}" ; \
 	    print "method & parameter & forces & error & s & ratio to rk8pd, median (min--max)\\\\ \\hline" } \
 	  /^# largest/ { note = substr($$0, 3) } /^# cpu/ { cpu = substr($$0, 8) } \
@@ -319,8 +344,15 @@ bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-lo
 	    printf "\\quad %s & %s & %s & %s & %s & %s\\\\\n", $$4, (met ? $$6 : "--"), (met ? $$7 : "--"), \
 	      $$8 (met ? "" : " (best)"), (met ? $$9 : "--"), r } \
 	  END { print "\\end{tabular}\\\\[1ex] " note "; " cpu "; " cc "\\end{center}" }' \
-	  figures/data/bench-targets.tsv > doc/gen/bench-targets.tex
-	rm -f doc/avi.pdf && $(MAKE) --no-print-directory doc
+	  $(REC)/bench-targets.tsv > doc/gen/bench-targets.tex
+	awk -F'\t' 'FNR == 1 { file++ } /^#/ { next } \
+	  { k = $$1 "_" $$2; gsub(/[^a-z0-9]+/, "_", k) } \
+	  file == 1 { if ($$4 != "-") print k "_loaded", $$4; next } \
+	  $$3 != "failed" { print k "_ns", $$3; print k "_ratio", $$4; \
+	    print k "_ratio_min", $$5; print k "_ratio_max", $$6 }' \
+	  $(REC)/bench-steps-loaded.tsv $(REC)/bench-steps.tsv > doc/gen/bench-steps.summary
+	touch $@
+doc/gen/bench-steps.summary: doc/gen/bench.stamp
 
 # --- memcheck ---------------------------------------------------------------
 # make memcheck: every unit test and every figure program (with its defaults,

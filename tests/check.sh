@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The test driver of `make check`:  tests/check.sh BUILD_DIR SRC.nw...
-# Runs five kinds of check, prints one "ok"/"not ok" line per check, and
+# Runs six kinds of check, prints one "ok"/"not ok" line per check, and
 # closes with the line "N passed, N failed, N skipped".
 #
 # A check that could not run says so in TAP's way, "ok - what # SKIP why",
@@ -95,5 +95,14 @@ deps_test() {
   else echo "not ok - without root or sudo, make exits $rc: $out"; fi
 }
 count < <(deps_test)
+
+# 6. The Speed chapter quotes measured numbers only from the recorded bench
+#    run (doc/bench, through \val): the sections converted so far, each with
+#    the decimal parameters and targets its text states.
+echo "# numbers in the prose"
+count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-steps \
+            0.5 0.01 0.4 0.1 1.6 2.5 1.3 2.6 3.9 1.25 2.0 1.8 3.361)
+count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-targets \
+            0.99 4.5 1.2 1.25)
 echo "$pass passed, $fail failed, $skip skipped"
 [ "$fail" -eq 0 ]
