@@ -191,7 +191,8 @@ doc/gen/woven.tex: $(NW) | $(B)/.deps
 # "key value" of figures/data/<id>.summary becomes \val{<id>}{key} (three
 # significant digits) and \valfull{<id>}{key} (six), exponents as powers of 10
 # below 1e-3.
-doc/gen/values.tex: $(FIGS:%=figures/data/%.summary) doc/gen/bench-steps.summary
+doc/gen/values.tex: $(FIGS:%=figures/data/%.summary) doc/gen/bench-steps.summary \
+	  doc/gen/bench-kepler-wp.summary
 	@mkdir -p doc/gen
 	awk 'function fmt(v, d,  s, m, e) { \
 	       if (v == int(v) && v < 1e15 && v > -1e15) return sprintf("%d", v); \
@@ -351,8 +352,15 @@ doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP)
 	  $$3 != "failed" { print k "_ns", $$3; print k "_ratio", $$4; \
 	    print k "_ratio_min", $$5; print k "_ratio_max", $$6 }' \
 	  $(REC)/bench-steps-loaded.tsv $(REC)/bench-steps.tsv > doc/gen/bench-steps.summary
+	awk -F'\t' 'FNR == 1 { file++ } /^#/ { next } \
+	  file == 1 && $$5 != "skipped" { k = "e" $$1 "_o" $$2 "_" $$3 "_" $$4; gsub(/[^a-z0-9]+/, "_", k); \
+	    print k "_forces", $$7; print k "_seconds", $$8; print k "_energy", $$9; \
+	    print k "_position", $$10; next } \
+	  file == 2 && $$3 != "nan" { k = "need_" $$1 "_" $$2; gsub(/[^a-z0-9]+/, "_", k); \
+	    print k "_forces", $$3; print k "_seconds", $$4 }' \
+	  $(REC)/bench-kepler-wp.tsv $(REC)/bench-kepler-wp-needs.tsv > doc/gen/bench-kepler-wp.summary
 	touch $@
-doc/gen/bench-steps.summary: doc/gen/bench.stamp
+doc/gen/bench-steps.summary doc/gen/bench-kepler-wp.summary: doc/gen/bench.stamp
 
 # --- memcheck ---------------------------------------------------------------
 # make memcheck: every unit test and every figure program (with its defaults,
