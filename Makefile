@@ -192,7 +192,7 @@ doc/gen/woven.tex: $(NW) | $(B)/.deps
 # significant digits) and \valfull{<id>}{key} (six), exponents as powers of 10
 # below 1e-3.
 doc/gen/values.tex: $(FIGS:%=figures/data/%.summary) doc/gen/bench-steps.summary \
-	  doc/gen/bench-kepler-wp.summary
+	  doc/gen/bench-kepler-wp.summary doc/gen/bench-threebody-wp.summary
 	@mkdir -p doc/gen
 	awk 'function fmt(v, d,  s, m, e) { \
 	       if (v == int(v) && v < 1e15 && v > -1e15) return sprintf("%d", v); \
@@ -359,8 +359,15 @@ doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP)
 	  file == 2 && $$3 != "nan" { k = "need_" $$1 "_" $$2; gsub(/[^a-z0-9]+/, "_", k); \
 	    print k "_forces", $$3; print k "_seconds", $$4 }' \
 	  $(REC)/bench-kepler-wp.tsv $(REC)/bench-kepler-wp-needs.tsv > doc/gen/bench-kepler-wp.summary
+	awk -F'\t' 'FNR == 1 { file++ } file == 1 && /^# method/ { sweep++ } /^#/ { next } \
+	  file == 1 && $$3 != "skipped" { k = (sweep == 1 ? "t10_" : "t30_") $$1 "_" $$2; \
+	    gsub(/[^a-z0-9]+/, "_", k); print k "_forces", $$5; print k "_seconds", $$7; \
+	    print k "_energy_end", $$8; print k "_energy_max", $$9; print k "_state", $$10; next } \
+	  file == 2 && $$4 != "-" { k = "need_" $$1 "_" $$2; gsub(/[^a-z0-9]+/, "_", k); \
+	    print k "_forces", $$4; print k "_seconds", $$5 }' \
+	  $(REC)/bench-threebody-wp.tsv $(REC)/bench-threebody-wp-needs.tsv > doc/gen/bench-threebody-wp.summary
 	touch $@
-doc/gen/bench-steps.summary doc/gen/bench-kepler-wp.summary: doc/gen/bench.stamp
+doc/gen/bench-steps.summary doc/gen/bench-kepler-wp.summary doc/gen/bench-threebody-wp.summary: doc/gen/bench.stamp
 
 # --- memcheck ---------------------------------------------------------------
 # make memcheck: every unit test and every figure program (with its defaults,
