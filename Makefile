@@ -192,7 +192,8 @@ doc/gen/woven.tex: $(NW) | $(B)/.deps
 # significant digits) and \valfull{<id>}{key} (six), exponents as powers of 10
 # below 1e-3.
 doc/gen/values.tex: $(FIGS:%=figures/data/%.summary) doc/gen/bench-steps.summary \
-	  doc/gen/bench-kepler-wp.summary doc/gen/bench-threebody-wp.summary
+	  doc/gen/bench-kepler-wp.summary doc/gen/bench-threebody-wp.summary \
+	  doc/gen/bench-kepler-long.summary
 	@mkdir -p doc/gen
 	awk 'function fmt(v, d,  s, m, e) { \
 	       if (v == int(v) && v < 1e15 && v > -1e15) return sprintf("%d", v); \
@@ -366,8 +367,17 @@ doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP)
 	  file == 2 && $$4 != "-" { k = "need_" $$1 "_" $$2; gsub(/[^a-z0-9]+/, "_", k); \
 	    print k "_forces", $$4; print k "_seconds", $$5 }' \
 	  $(REC)/bench-threebody-wp.tsv $(REC)/bench-threebody-wp-needs.tsv > doc/gen/bench-threebody-wp.summary
+	awk -F'\t' 'FNR == 1 { file++; split("dae_error dae_forces dae_s rk8pd_tol rk8pd_error rk8pd_forces rk8pd_s force_ratio time_ratio", col, " ") } /^#/ { next } \
+	  file == 1 { k = "ds" $$1 "_t" $$2; gsub(/[^a-z0-9]+/, "_", k); \
+	    for (i = 3; i <= 11; i++) if ($$i != "nan" && $$i != "-") print k "_" col[i - 2], $$i; next } \
+	  { k = "ds" $$1 "_" $$2; gsub(/[^a-z0-9]+/, "_", k); end[k] = $$3; err[k] = $$4; \
+	    if ($$3 == 10) at10[k] = $$4; if ($$4 > mx[k]) mx[k] = $$4 } \
+	  END { for (k in end) { print k "_end_periods", end[k]; print k "_end_error", err[k]; \
+	    print k "_max_error", mx[k]; if (k in at10) print k "_at10_error", at10[k] } }' \
+	  $(REC)/bench-kepler-long-costs.tsv $(REC)/bench-kepler-long.tsv > doc/gen/bench-kepler-long.summary
 	touch $@
-doc/gen/bench-steps.summary doc/gen/bench-kepler-wp.summary doc/gen/bench-threebody-wp.summary: doc/gen/bench.stamp
+doc/gen/bench-steps.summary doc/gen/bench-kepler-wp.summary doc/gen/bench-threebody-wp.summary \
+  doc/gen/bench-kepler-long.summary: doc/gen/bench.stamp
 
 # --- memcheck ---------------------------------------------------------------
 # make memcheck: every unit test and every figure program (with its defaults,
