@@ -193,7 +193,7 @@ doc/gen/woven.tex: $(NW) | $(B)/.deps
 # below 1e-3.
 doc/gen/values.tex: $(FIGS:%=figures/data/%.summary) doc/gen/bench-steps.summary \
 	  doc/gen/bench-kepler-wp.summary doc/gen/bench-threebody-wp.summary \
-	  doc/gen/bench-kepler-long.summary
+	  doc/gen/bench-kepler-long.summary doc/gen/bench-pendulum.summary
 	@mkdir -p doc/gen
 	awk 'function fmt(v, d,  s, m, e) { \
 	       if (v == int(v) && v < 1e15 && v > -1e15) return sprintf("%d", v); \
@@ -375,9 +375,15 @@ doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP)
 	  END { for (k in end) { print k "_end_periods", end[k]; print k "_end_error", err[k]; \
 	    print k "_max_error", mx[k]; if (k in at10) print k "_at10_error", at10[k] } }' \
 	  $(REC)/bench-kepler-long-costs.tsv $(REC)/bench-kepler-long.tsv > doc/gen/bench-kepler-long.summary
+	awk -F'\t' '/^# order/ { n = split($$0, w, /[^0-9.]+/); print "order", w[2]; print "steps_ratio", w[3]; \
+	    print "evals_ratio", w[4]; print "time_ratio", w[5] } /^#/ { next } \
+	  { k = $$1 == "midpoint-matching" ? "matching" : $$1 "_" $$2; gsub(/[^a-z0-9]+/, "_", k); \
+	    print k "_step", $$2; print k "_t", $$4; print k "_steps", $$5; print k "_evals", $$6; \
+	    print k "_error", $$7; print k "_s", $$8 }' \
+	  $(REC)/bench-pendulum.tsv > doc/gen/bench-pendulum.summary
 	touch $@
 doc/gen/bench-steps.summary doc/gen/bench-kepler-wp.summary doc/gen/bench-threebody-wp.summary \
-  doc/gen/bench-kepler-long.summary: doc/gen/bench.stamp
+  doc/gen/bench-kepler-long.summary doc/gen/bench-pendulum.summary: doc/gen/bench.stamp
 
 # --- memcheck ---------------------------------------------------------------
 # make memcheck: every unit test and every figure program (with its defaults,

@@ -110,5 +110,6 @@ count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-three-body \
             3.361 0.1 0.05 0.04 0.02 0.01 0.005 0.002 0.001 0.000625)
 count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-long \
             1.09 0.3 0.99 0.05 0.01 0.002)
+count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-pendulum)
 echo "$pass passed, $fail failed, $skip skipped"
 [ "$fail" -eq 0 ]
