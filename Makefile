@@ -193,7 +193,8 @@ doc/gen/woven.tex: $(NW) | $(B)/.deps
 # below 1e-3.
 doc/gen/values.tex: $(FIGS:%=figures/data/%.summary) doc/gen/bench-steps.summary \
 	  doc/gen/bench-kepler-wp.summary doc/gen/bench-threebody-wp.summary \
-	  doc/gen/bench-kepler-long.summary doc/gen/bench-pendulum.summary
+	  doc/gen/bench-kepler-long.summary doc/gen/bench-pendulum.summary \
+	  doc/gen/bench-cubic-wp.summary
 	@mkdir -p doc/gen
 	awk 'function fmt(v, d,  s, m, e) { \
 	       if (v == int(v) && v < 1e15 && v > -1e15) return sprintf("%d", v); \
@@ -284,7 +285,7 @@ BENCH_TSV := bench-steps bench-steps-loaded bench-kepler-wp bench-kepler-wp-need
 BENCH_GP  := $(patsubst %,tangle/bench/%.gp,bench-kepler-wp bench-kepler-long bench-cubic-wp \
              bench-threebody-wp bench-atlas)
 PLOT  = gnuplot -e "datadir='$(REC)'; outdir='figures'" tangle/bench/$(1).gp
-doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP)
+doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-cubic-summary.awk
 	@mkdir -p doc/gen figures
 	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{llrrrrrl}" ; \
 	    print "problem & scheme & ns/step & ratio & min--max & loaded & forces/step & target\\\\ \\hline" } \
@@ -381,9 +382,12 @@ doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP)
 	    print k "_step", $$2; print k "_t", $$4; print k "_steps", $$5; print k "_evals", $$6; \
 	    print k "_error", $$7; print k "_s", $$8 }' \
 	  $(REC)/bench-pendulum.tsv > doc/gen/bench-pendulum.summary
+	awk -f tangle/bench/bench-cubic-summary.awk $(REC)/bench-cubic-wp.tsv \
+	  $(REC)/bench-cubic-wp-needs.tsv > doc/gen/bench-cubic-wp.summary
 	touch $@
 doc/gen/bench-steps.summary doc/gen/bench-kepler-wp.summary doc/gen/bench-threebody-wp.summary \
-  doc/gen/bench-kepler-long.summary doc/gen/bench-pendulum.summary: doc/gen/bench.stamp
+  doc/gen/bench-kepler-long.summary doc/gen/bench-pendulum.summary \
+  doc/gen/bench-cubic-wp.summary: doc/gen/bench.stamp
 
 # --- memcheck ---------------------------------------------------------------
 # make memcheck: every unit test and every figure program (with its defaults,

@@ -34,7 +34,7 @@ count() {   # read TAP-like lines on stdin, echo them, count them
 #    shows up here as a name that is not a path the build knows.
 echo "# root chunks"
 odd=$(noroots "$@" | sed -e 's/^<<//' -e 's/>>$//' | grep -Ev \
-  '^(lib/[a-z0-9-]+\.[ch]|ref/[a-z0-9-]+\.[ch]|lib/avi\.pc\.in|examples/[a-z0-9-]+\.(c|cc)|cli/avi\.(c|1)|figkit/[a-z0-9-]+\.[ch]|fig/[a-z0-9-]+\.(c|gp)|test/test-[a-z0-9-]+\.(c|sh)|golden/[a-z0-9-]+\.tol|bench/[a-z0-9-]+\.(c|gp))$')
+  '^(lib/[a-z0-9-]+\.[ch]|ref/[a-z0-9-]+\.[ch]|lib/avi\.pc\.in|examples/[a-z0-9-]+\.(c|cc)|cli/avi\.(c|1)|figkit/[a-z0-9-]+\.[ch]|fig/[a-z0-9-]+\.(c|gp)|test/test-[a-z0-9-]+\.(c|sh)|golden/[a-z0-9-]+\.tol|bench/[a-z0-9-]+\.(c|gp|awk))$')
 if [ -z "$odd" ]; then
   count <<< "ok - every root chunk names an output file"
 else
@@ -111,5 +111,7 @@ count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-three-body \
 count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-long \
             1.09 0.3 0.99 0.05 0.01 0.002)
 count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-pendulum)
+count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-cubic \
+            0.3 0.054 0.5 0.25 0.8 0.4 0.2 0.002 0.001 1.0512 1.0524 0.28 0.41)
 echo "$pass passed, $fail failed, $skip skipped"
 [ "$fail" -eq 0 ]
