@@ -88,6 +88,11 @@ ifeq ($(filter clean,$(MAKECMDGOALS)),)
 include tangle/files.mk
 endif
 
+# The cost guard's pinned counts, which its section quotes (src/95-bench.nw).
+doc/gen/cost-guard.summary: tangle/bench/cost-pins.awk tangle/test/test-cost-guard.c
+	@mkdir -p doc/gen
+	awk -f $^ > $@
+
 # --- building ---------------------------------------------------------------
 # GCC's quadmath.h lives in GCC's own header directory, which Clang does not
 # search; -idirafter adds it after every other, so that Clang takes only
@@ -194,7 +199,7 @@ doc/gen/woven.tex: $(NW) | $(B)/.deps
 doc/gen/values.tex: $(FIGS:%=figures/data/%.summary) doc/gen/bench-steps.summary \
 	  doc/gen/bench-kepler-wp.summary doc/gen/bench-threebody-wp.summary \
 	  doc/gen/bench-kepler-long.summary doc/gen/bench-pendulum.summary \
-	  doc/gen/bench-cubic-wp.summary
+	  doc/gen/bench-cubic-wp.summary doc/gen/bench-atlas.summary doc/gen/cost-guard.summary
 	@mkdir -p doc/gen
 	awk 'function fmt(v, d,  s, m, e) { \
 	       if (v == int(v) && v < 1e15 && v > -1e15) return sprintf("%d", v); \
@@ -285,7 +290,8 @@ BENCH_TSV := bench-steps bench-steps-loaded bench-kepler-wp bench-kepler-wp-need
 BENCH_GP  := $(patsubst %,tangle/bench/%.gp,bench-kepler-wp bench-kepler-long bench-cubic-wp \
              bench-threebody-wp bench-atlas)
 PLOT  = gnuplot -e "datadir='$(REC)'; outdir='figures'" tangle/bench/$(1).gp
-doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-cubic-summary.awk
+doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-cubic-summary.awk \
+  tangle/bench/bench-atlas-summary.awk
 	@mkdir -p doc/gen figures
 	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{llrrrrrl}" ; \
 	    print "problem & scheme & ns/step & ratio & min--max & loaded & forces/step & target\\\\ \\hline" } \
@@ -350,9 +356,13 @@ doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-
 	  $(REC)/bench-targets.tsv > doc/gen/bench-targets.tex
 	awk -F'\t' 'FNR == 1 { file++ } /^#/ { next } \
 	  { k = $$1 "_" $$2; gsub(/[^a-z0-9]+/, "_", k) } \
-	  file == 1 { if ($$4 != "-") print k "_loaded", $$4; next } \
+	  file == 1 { if ($$4 != "-") { print k "_loaded", $$4; L[k] = $$4 }; next } \
 	  $$3 != "failed" { print k "_ns", $$3; print k "_ratio", $$4; \
-	    print k "_ratio_min", $$5; print k "_ratio_max", $$6 }' \
+	    print k "_ratio_min", $$5; print k "_ratio_max", $$6 } \
+	  (k in L) && $$4 != "-" && $$4 > 0 { d = L[k] / $$4 - 1; if (d < 0) d = -d; \
+	    if (d > mx) mx = d; sum += d; cnt++; if (d <= 0.03) within++ } \
+	  END { print "load_diff_max_pct", 100 * mx; print "load_diff_mean_pct", 100 * sum / cnt; \
+	    print "load_rows", cnt; print "load_rows_within_3pct", within }' \
 	  $(REC)/bench-steps-loaded.tsv $(REC)/bench-steps.tsv > doc/gen/bench-steps.summary
 	awk -F'\t' 'FNR == 1 { file++ } /^#/ { next } \
 	  file == 1 && $$5 != "skipped" { k = "e" $$1 "_o" $$2 "_" $$3 "_" $$4; gsub(/[^a-z0-9]+/, "_", k); \
@@ -384,10 +394,12 @@ doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-
 	  $(REC)/bench-pendulum.tsv > doc/gen/bench-pendulum.summary
 	awk -f tangle/bench/bench-cubic-summary.awk $(REC)/bench-cubic-wp.tsv \
 	  $(REC)/bench-cubic-wp-needs.tsv > doc/gen/bench-cubic-wp.summary
+	awk -f tangle/bench/bench-atlas-summary.awk $(REC)/bench-atlas.tsv \
+	  $(REC)/bench-atlas-summary.tsv > doc/gen/bench-atlas.summary
 	touch $@
 doc/gen/bench-steps.summary doc/gen/bench-kepler-wp.summary doc/gen/bench-threebody-wp.summary \
   doc/gen/bench-kepler-long.summary doc/gen/bench-pendulum.summary \
-  doc/gen/bench-cubic-wp.summary: doc/gen/bench.stamp
+  doc/gen/bench-cubic-wp.summary doc/gen/bench-atlas.summary: doc/gen/bench.stamp
 
 # --- memcheck ---------------------------------------------------------------
 # make memcheck: every unit test and every figure program (with its defaults,

@@ -97,9 +97,12 @@ deps_test() {
 count < <(deps_test)
 
 # 6. The Speed chapter quotes measured numbers only from the recorded bench
-#    run (doc/bench, through \val): the sections converted so far, each with
-#    the decimal parameters and targets its text states.
+#    run (doc/bench, through \val), and the cost guard's from its pinned
+#    table: each section with the decimal parameters, targets and equation
+#    numbers its text states.
 echo "# numbers in the prose"
+count < <(tests/prose-numbers.sh src/95-bench.nw sec:cost-guard \
+            0.5 0.01 0.4 0.1 0.05 0.3 4.18)
 count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-steps \
             0.5 0.01 0.4 0.1 1.6 2.5 1.3 2.6 3.9 1.25 2.0 1.8 3.361)
 count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-targets \
@@ -111,6 +114,8 @@ count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-three-body \
 count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-long \
             1.09 0.3 0.99 0.05 0.01 0.002)
 count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-pendulum)
+count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-atlas \
+            0.1 0.99 0.009 0.3 0.5 0.4 1.05134 0.01 1.2 3.2 5.623 0.18 0.32 0.56)
 count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-cubic \
             0.3 0.054 0.5 0.25 0.8 0.4 0.2 0.002 0.001 1.0512 1.0524 0.28 0.41)
 echo "$pass passed, $fail failed, $skip skipped"
