@@ -220,6 +220,9 @@ doc/avi.pdf: doc/avi.tex doc/gen/woven.tex doc/gen/values.tex $(FIGS:%=figures/%
 	  || { tail -40 gen/latexmk.out; false; }
 	@! grep -E 'LaTeX Warning: (Reference|Citation).*undefined|There were undefined' doc/gen/avi.log \
 	  || { echo "doc/avi.pdf: undefined references (see doc/gen/avi.log)"; false; }
+	@awk '/^Overfull \\[hv]box \(/ { w = substr($$3, 2) + 0; if (w > 10) { print; bad++ } } \
+	  END { if (bad) { print "doc/avi.pdf: " bad " overfull boxes over 10pt (see doc/gen/avi.log)"; exit 1 } }' \
+	  doc/gen/avi.log
 	cp doc/gen/avi.pdf $@
 
 # --- benchmarks -------------------------------------------------------------
@@ -305,7 +308,7 @@ doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-
 	  { if (!($$1 in seen)) { seen[$$1] = 1; tg[++nt] = $$1 } \
 	    if (!($$2 in row)) { order[++n] = $$2; row[$$2] = $$2 } \
 	    row[$$2] = row[$$2] " & " ($$3 == "nan" ? "--" : $$3) " & " ($$4 == "nan" ? "--" : $$4) } \
-	  END { printf "\\begin{center}\\footnotesize\\begin{tabular}{l"; for (i = 1; i <= nt; i++) printf "rr"; print "}"; \
+	  END { printf "\\begin{center}\\footnotesize\\setlength{\\tabcolsep}{4pt}\\begin{tabular}{l"; for (i = 1; i <= nt; i++) printf "rr"; print "}"; \
 	    printf "error"; for (i = 1; i <= nt; i++) printf " & \\multicolumn{2}{c}{%s}", tg[i]; print "\\\\"; \
 	    printf "method"; for (i = 1; i <= nt; i++) printf " & forces & s"; print "\\\\ \\hline"; \
 	    for (i = 1; i <= n; i++) print row[order[i]] "\\\\"; \
