@@ -74,7 +74,7 @@ tangle/files.mk: $(NW) | $(B)/.deps
 	  notangle $$L -R"$$r" $(NW) > tangle/.tmp; \
 	  cpif tangle/$$r < tangle/.tmp; \
 	done; rm -f tangle/.tmp; \
-	for f in $$(cd tangle && find lib ref figkit fig test golden bench examples cli -type f 2>/dev/null); do \
+	for f in $$(cd tangle && find lib ref figkit fig test golden bench examples cli weave -type f 2>/dev/null); do \
 	  grep -qxF "$$f" <<< "$$roots" || { echo "removing stale tangle/$$f"; rm -f tangle/$$f; }; \
 	done; \
 	{ echo "ROOTS := $$(echo $$roots)"; \
@@ -187,9 +187,12 @@ figures/hl-fig5.pdf figures/hl-fig5.png: figures/data/hl-fig5c.summary
 # identifier index span the whole book; doc/avi.tex is the hand-written master.
 doc: doc/avi.pdf
 
-doc/gen/woven.tex: $(NW) | $(B)/.deps
+doc/gen/woven.tex: $(NW) tangle/weave/c-index.awk | $(B)/.deps
 	@mkdir -p doc/gen
-	noweave -n -index -autodefs c $(NW) > doc/gen/.tmp
+	noweave -n -filter 'awk -v kind=defn -f tangle/weave/c-index.awk' -index \
+	  -filter 'awk -v kind=use -f tangle/weave/c-index.awk' $(NW) \
+	  > doc/gen/.tmp 2> doc/gen/.err || { cat doc/gen/.err; false; }
+	@! test -s doc/gen/.err || { cat doc/gen/.err; echo "noweave: a stage failed"; false; }
 	cpif $@ < doc/gen/.tmp && rm -f doc/gen/.tmp
 
 # Numbers quoted in the text come from the figures' summaries: each line

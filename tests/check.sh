@@ -34,7 +34,7 @@ count() {   # read TAP-like lines on stdin, echo them, count them
 #    shows up here as a name that is not a path the build knows.
 echo "# root chunks"
 odd=$(noroots "$@" | sed -e 's/^<<//' -e 's/>>$//' | grep -Ev \
-  '^(lib/[a-z0-9-]+\.[ch]|ref/[a-z0-9-]+\.[ch]|lib/avi\.pc\.in|examples/[a-z0-9-]+\.(c|cc)|cli/avi\.(c|1)|figkit/[a-z0-9-]+\.[ch]|fig/[a-z0-9-]+\.(c|gp)|test/test-[a-z0-9-]+\.(c|sh)|golden/[a-z0-9-]+\.tol|bench/[a-z0-9-]+\.(c|gp|awk))$')
+  '^(lib/[a-z0-9-]+\.[ch]|ref/[a-z0-9-]+\.[ch]|lib/avi\.pc\.in|examples/[a-z0-9-]+\.(c|cc)|cli/avi\.(c|1)|figkit/[a-z0-9-]+\.[ch]|fig/[a-z0-9-]+\.(c|gp)|test/test-[a-z0-9-]+\.(c|sh)|golden/[a-z0-9-]+\.tol|bench/[a-z0-9-]+\.(c|gp|awk)|weave/[a-z0-9-]+\.awk)$')
 if [ -z "$odd" ]; then
   count <<< "ok - every root chunk names an output file"
 else
