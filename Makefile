@@ -142,7 +142,7 @@ $(B)/bench/bench-atlas.o: CFLAGS += -fopenmp
 $(B)/bench/bench-atlas: LDFLAGS += -fopenmp
 $(B)/bench/bench-atlas: $(FIGKIT_O)
 
-# The reference solutions in binary128 (src/85-references.nw): an archive of
+# The reference solutions in binary128 (src/94-references.nw): an archive of
 # their own, not part of libavi, linked with GCC's libquadmath (Debian:
 # libgcc-12-dev, which gcc depends on) only into the programs that use them.
 REF_O    := $(patsubst tangle/%.c,$(B)/%.o,$(REF_C))
