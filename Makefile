@@ -216,8 +216,13 @@ doc/gen/values.tex: $(FIGS:%=figures/data/%.summary) doc/gen/bench-steps.summary
 	               printf "\\expandafter\\def\\csname valfull:%s:%s\\endcsname{%s}\n", id, $$1, fmt($$2, 6) }' \
 	  $^ > $@
 
+# The concordance of the papers' equations (src/10-intro.nw), from the sources.
+doc/gen/concordance.tex: tangle/weave/concordance.awk $(NW)
+	@mkdir -p doc/gen
+	awk -f $^ > $@
+
 doc/avi.pdf: doc/avi.tex doc/gen/woven.tex doc/gen/values.tex $(FIGS:%=figures/%.pdf) \
-	     doc/gen/bench.stamp
+	     doc/gen/bench.stamp doc/gen/concordance.tex
 	cd doc && latexmk -pdf -interaction=nonstopmode -halt-on-error \
 	  -outdir=gen -quiet avi.tex > gen/latexmk.out 2>&1 \
 	  || { tail -40 gen/latexmk.out; false; }
