@@ -1,6 +1,7 @@
 # Makefile of the adaptive Verlet integrators (avi).
 #
 #   make          tangle, build, every figure, the woven PDF (doc/avi.pdf)
+#                 and its web edition (doc/html/avi.html)
 #   make check    unit tests, golden files, chunk check; ends "N passed, N failed"
 #   make record   re-record the golden files from figures/data (commit separately)
 #   make deps     install the Debian packages the build needs (run by make)
@@ -28,8 +29,8 @@ LDFLAGS += -fsanitize=address,undefined
 B       := build-san
 endif
 
-.PHONY: all figures doc check record deps clean bench install install-doc uninstall memcheck cli
-all: figures doc cli
+.PHONY: all figures doc html check record deps clean bench install install-doc uninstall memcheck cli
+all: figures doc html cli
 
 # --- dependencies ---------------------------------------------------------
 # Debian 12 packages, the compilers included (a minimal Debian has neither cc
@@ -39,7 +40,8 @@ all: figures doc cli
 # command to run and exit 2.
 DEB_PKGS := gcc libc6-dev g++ groff-base noweb libgsl-dev gnuplot-nox \
             texlive-latex-base texlive-latex-recommended texlive-fonts-recommended \
-            latexmk numdiff libcmocka-dev pkg-config
+            latexmk numdiff libcmocka-dev pkg-config \
+            texlive-plain-generic texlive-extra-utils chromium-headless-shell
 deps $(B)/.deps:
 	@missing=$$(for p in $(DEB_PKGS); do \
 	    dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' \
@@ -232,6 +234,21 @@ doc/avi.pdf: doc/avi.tex doc/gen/woven.tex doc/gen/values.tex $(FIGS:%=figures/%
 	  END { if (bad) { print "doc/avi.pdf: " bad " overfull boxes over 10pt (see doc/gen/avi.log)"; exit 1 } }' \
 	  doc/gen/avi.log
 	cp doc/gen/avi.pdf $@
+
+# The web edition (src/98-web.nw): TeX4ht on the same master, run in
+# doc/gen/html where links put the master, its generated inputs and the
+# figures where it expects them; make4ht copies the pages, the style sheet
+# and the figures they use to doc/html.  A TeX error in the last pass fails it.
+html: doc/html/avi.html
+doc/html/avi.html: doc/avi.tex doc/gen/woven.tex doc/gen/values.tex $(FIGS:%=figures/%.png) \
+	     doc/gen/bench.stamp doc/gen/concordance.tex tangle/weave/avi-html.cfg
+	rm -rf doc/gen/html doc/html && mkdir -p doc/gen/html
+	ln -s ../../avi.tex doc/gen/html/avi.tex && ln -s .. doc/gen/html/gen \
+	  && ln -s ../../../figures doc/gen/html/figures
+	cd doc/gen/html && make4ht -c ../../../tangle/weave/avi-html.cfg -d ../../html \
+	  avi.tex "xhtml,mathml,2" > make4ht.out 2>&1 || { tail -40 make4ht.out; false; }
+	@! grep -A3 '^! ' doc/gen/html/avi.log || { echo "doc/html: TeX errors (see doc/gen/html/avi.log)"; false; }
+	@test -s $@ || { echo "doc/html: make4ht wrote no $@"; false; }
 
 # --- benchmarks -------------------------------------------------------------
 # make bench: timings, never part of make or make check.  Each table records
@@ -472,12 +489,12 @@ uninstall:
 	-rmdir $(DESTDIR)$(PREFIX)/include/avi $(DESTDIR)$(DOCDIR) 2>/dev/null
 
 # --- tests ------------------------------------------------------------------
-check: $(TEST_BIN) $(CLI_BIN) $(FIGS:%=figures/data/%.summary) figures
+check: $(TEST_BIN) $(CLI_BIN) $(FIGS:%=figures/data/%.summary) figures doc/html/avi.html
 	@tests/check.sh $(B) $(NW)
 
 record: $(FIGS:%=figures/data/%.summary)
 	tests/golden.sh record
 
 clean:
-	rm -rf build build-san figures/*.pdf figures/*.png figures/data doc/gen doc/avi.pdf
+	rm -rf build build-san figures/*.pdf figures/*.png figures/data doc/gen doc/avi.pdf doc/html
 	find tangle -mindepth 1 ! -name README.md ! -name .gitignore -delete

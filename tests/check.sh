@@ -34,7 +34,7 @@ count() {   # read TAP-like lines on stdin, echo them, count them
 #    shows up here as a name that is not a path the build knows.
 echo "# root chunks"
 odd=$(noroots "$@" | sed -e 's/^<<//' -e 's/>>$//' | grep -Ev \
-  '^(lib/[a-z0-9-]+\.[ch]|ref/[a-z0-9-]+\.[ch]|lib/avi\.pc\.in|examples/[a-z0-9-]+\.(c|cc)|cli/avi\.(c|1)|figkit/[a-z0-9-]+\.[ch]|fig/[a-z0-9-]+\.(c|gp)|test/test-[a-z0-9-]+\.(c|sh)|golden/[a-z0-9-]+\.tol|bench/[a-z0-9-]+\.(c|gp|awk)|weave/[a-z0-9-]+\.awk)$')
+  '^(lib/[a-z0-9-]+\.[ch]|ref/[a-z0-9-]+\.[ch]|lib/avi\.pc\.in|examples/[a-z0-9-]+\.(c|cc)|cli/avi\.(c|1)|figkit/[a-z0-9-]+\.[ch]|fig/[a-z0-9-]+\.(c|gp)|test/test-[a-z0-9-]+\.(c|sh)|golden/[a-z0-9-]+\.tol|bench/[a-z0-9-]+\.(c|gp|awk)|weave/[a-z0-9-]+\.(awk|cfg|html|sh))$')
 if [ -z "$odd" ]; then
   count <<< "ok - every root chunk names an output file"
 else
@@ -118,5 +118,12 @@ count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-atlas \
             0.1 0.99 0.009 0.3 0.5 0.4 1.05134 0.01 1.2 3.2 5.623 0.18 0.32 0.56)
 count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-cubic \
             0.3 0.054 0.5 0.25 0.8 0.4 0.2 0.002 0.001 1.0512 1.0524 0.28 0.41)
+# 7. The web edition, read in headless Chromium (src/98-web.nw): every page
+#    loads without console messages, its equations are laid out as MathML,
+#    its images load, its prose has no raw LaTeX, every link within the book
+#    resolves, and a screenshot of the page with most displayed equations is not blank.
+echo "# the web edition"
+count < <(bash tangle/weave/html-check.sh doc/html "$build/web")
+
 echo "$pass passed, $fail failed, $skip skipped"
 [ "$fail" -eq 0 ]
