@@ -41,7 +41,7 @@ all: figures doc html cli
 DEB_PKGS := gcc libc6-dev g++ groff-base noweb libgsl-dev gnuplot-nox \
             texlive-latex-base texlive-latex-recommended texlive-fonts-recommended \
             latexmk numdiff libcmocka-dev pkg-config \
-            texlive-plain-generic texlive-extra-utils chromium-headless-shell
+            texlive-plain-generic texlive-extra-utils chromium-headless-shell fonts-lmodern
 deps $(B)/.deps:
 	@missing=$$(for p in $(DEB_PKGS); do \
 	    dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' \

@@ -125,5 +125,23 @@ count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-cubic \
 echo "# the web edition"
 count < <(bash tangle/weave/html-check.sh doc/html "$build/web")
 
+# 8. The figures are lettered in the document's typeface: every font that a
+#    figure's PDF embeds is Latin Modern (the text face, or its math face for
+#    lowercase Greek).  A font that is missing would fall back silently to
+#    another; so would a label written in a face the scripts do not set.
+echo "# figure fonts"
+figure_fonts() {
+  local f fonts other bad=
+  for f in figures/*.pdf; do
+    fonts=$(grep -a -o '/BaseFont */[A-Z]*+[A-Za-z0-9-]*' "$f" | sed 's/.*+//' | sort -u)
+    other=$(grep -v -E '^(LMRoman|LatinModernMath)' <<< "$fonts")
+    if ! grep -q '^LMRoman' <<< "$fonts" || [ -n "$other" ]; then
+      bad="$bad $(basename "$f") (${other:-no Latin Modern})"; fi
+  done
+  if [ -z "$bad" ]; then echo "ok - every figure is lettered in Latin Modern only"
+  else echo "not ok - figures lettered in other faces:$bad"; fi
+}
+count < <(figure_fonts)
+
 echo "$pass passed, $fail failed, $skip skipped"
 [ "$fail" -eq 0 ]
