@@ -6,8 +6,8 @@
 #   tests/golden.sh record    copy figures/data into tests/golden
 #
 # Which files are golden, and with which numdiff tolerances, is not decided
-# here: each tangle/golden/<id>.tol is tangled from the chapter that produces
-# figure <id>, where the tolerances are argued.  Its lines read
+# here: each tangle/golden/<id>.tol is tangled from the appendix chapter on
+# claims and golden files (src/97-claims.nw), where the tolerances are argued.  Its lines read
 #     FILE  NUMDIFF-OPTIONS...
 # with FILE a name in figures/data/.  Lines that start with '#' are comments.
 # Timing keys (wall_s, and any key that starts with wall_) vary from run
