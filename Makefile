@@ -2,7 +2,8 @@
 #
 #   make          tangle, build, every figure, the woven PDF (doc/avi.pdf)
 #                 and its web edition (doc/html/avi.html)
-#   make check    unit tests, golden files, chunk check; ends "N passed, N failed"
+#   make check    unit tests, golden files, chunk check, the web edition in a
+#                 browser; ends "N passed, N failed"
 #   make record   re-record the golden files from figures/data (commit separately)
 #   make deps     install the Debian packages the build needs (run by make)
 #   make clean    remove everything generated

@@ -118,10 +118,12 @@ count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-atlas \
             0.1 0.99 0.009 0.3 0.5 0.4 1.05134 0.01 1.2 3.2 5.623 0.18 0.32 0.56)
 count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-cubic \
             0.3 0.054 0.5 0.25 0.8 0.4 0.2 0.002 0.001 1.0512 1.0524 0.28 0.41)
+
 # 7. The web edition, read in headless Chromium (src/98-web.nw): every page
 #    loads without console messages, its equations are laid out as MathML,
 #    its images load, its prose has no raw LaTeX, every link within the book
-#    resolves, and a screenshot of the page with most displayed equations is not blank.
+#    resolves, the book has all its pages, and a screenshot of the page with
+#    most displayed equations is not blank.
 echo "# the web edition"
 book_pages=$(( $(grep -cE '^\\(part|chapter)\*?\{' doc/gen/woven.tex) \
                + $(grep -cE '^\\chapter\*\{' doc/avi.tex) + 1 ))
