@@ -1,6 +1,6 @@
 # Makefile of the adaptive Verlet integrators (avi).
 #
-#   make          tangle, build, every figure, the woven PDF (doc/avi.pdf)
+#   make          tangle, build, every figure, the woven PDF in two volumes (doc/avi.pdf, doc/avi-vol2.pdf)
 #                 and its web edition (doc/html/avi.html)
 #   make check    unit tests, golden files, chunk check, the web edition in a
 #                 browser; ends "N passed, N failed"
@@ -156,7 +156,7 @@ $(B)/libavi-ref.a: $(REF_O)
 $(QUAD_BIN): $(B)/libavi-ref.a
 $(QUAD_BIN): LDLIBS += -lquadmath
 
-# the command-line program avi (src/97-cli.nw)
+# the command-line program avi (src/99b-cli.nw)
 cli: $(CLI_BIN)
 $(CLI_BIN): $(B)/cli/%: $(B)/cli/%.o $(B)/libavi.a
 	$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
@@ -188,7 +188,7 @@ figures/hl-fig5.pdf figures/hl-fig5.png: figures/data/hl-fig5c.summary
 # --- the woven document -----------------------------------------------------
 # All chapters are woven in one scope, so chunk cross-references and the
 # identifier index span the whole book; doc/avi.tex is the hand-written master.
-doc: doc/avi.pdf
+doc: doc/avi.pdf doc/avi-vol2.pdf
 
 doc/gen/woven.tex: $(NW) tangle/weave/c-index.awk | $(B)/.deps
 	@mkdir -p doc/gen
@@ -224,27 +224,64 @@ doc/gen/concordance.tex: tangle/weave/concordance.awk $(NW)
 	@mkdir -p doc/gen
 	awk -f $^ > $@
 
-doc/avi.pdf: doc/avi.tex doc/gen/woven.tex doc/gen/values.tex $(FIGS:%=figures/%.pdf) \
-	     doc/gen/bench.stamp doc/gen/concordance.tex
-	cd doc && latexmk -pdf -interaction=nonstopmode -halt-on-error \
-	  -outdir=gen -quiet avi.tex > gen/latexmk.out 2>&1 \
-	  || { tail -40 gen/latexmk.out; false; }
-	@! grep -E 'LaTeX Warning: (Reference|Citation).*undefined|There were undefined' doc/gen/avi.log \
-	  || { echo "doc/avi.pdf: undefined references (see doc/gen/avi.log)"; false; }
-	@awk '/^Overfull \\[hv]box \(/ { w = substr($$3, 2) + 0; if (w > 10) { print; bad++ } } \
-	  END { if (bad) { print "doc/avi.pdf: " bad " overfull boxes over 10pt (see doc/gen/avi.log)"; exit 1 } }' \
-	  doc/gen/avi.log
-	cp doc/gen/avi.pdf $@
+# The woven text is cut into the PDF's two volumes at the files' boundaries
+# (noweave marks each with \nwfilename): Volume II is VOL2_NW, the unit tests
+# and the program; the index data that noweave writes after the last file
+# goes to both (doc/avi.tex says how the volumes refer to each other).
+VOL2_NW := src/99a-tests.nw src/99b-cli.nw
+WOVEN   := doc/gen/woven-1.tex doc/gen/woven-2.tex doc/gen/woven-ix.tex
+$(WOVEN) &: doc/gen/woven.tex
+	awk -v vol2=' $(VOL2_NW) ' -v v1=doc/gen/woven-1.tex -v v2=doc/gen/woven-2.tex \
+	  -v ix=doc/gen/woven-ix.tex \
+	  'BEGIN { out = v1 } \
+	   /^\\nwixlogsorted/ { print > ix; next } \
+	   { line = $$0; \
+	     while ((i = index(line, "\\nwfilename{")) > 0) { \
+	       printf "%s", substr(line, 1, i - 1) > out; \
+	       f = substr(line, i + 12); f = substr(f, 1, index(f, "}") - 1); \
+	       out = index(vol2, " " f " ") ? v2 : v1; \
+	       printf "%s", substr(line, i, 12) > out; line = substr(line, i + 12) } \
+	     print line > out }' $<
+
+# Each volume reads what the other's .aux says of its pages, chunks and
+# identifiers (doc/gen/<master>.ext, which holds the other labels as comments
+# so that latexmk sees them change too): they are typeset in turn until a
+# round changes neither .ext, at most four rounds.  The build fails on an undefined
+# reference or an overfull box over 10pt in either.
+DOC_DEPS = doc/avi.tex doc/avi-vol2.tex doc/preamble.tex doc/indexes.tex $(WOVEN) \
+	   doc/gen/values.tex $(FIGS:%=figures/%.pdf) doc/gen/bench.stamp doc/gen/concordance.tex
+LATEXMK  = latexmk -pdf -interaction=nonstopmode -halt-on-error -outdir=gen -quiet
+doc/avi.pdf doc/avi-vol2.pdf &: $(DOC_DEPS)
+	cd doc && touch gen/avi.ext gen/avi-vol2.ext && for round in 1 2 3 4 0; do \
+	  test $$round != 0 || { echo "doc: the two volumes did not settle in four rounds"; exit 1; }; \
+	  changed=; for v in avi avi-vol2; do \
+	    $(LATEXMK) $$v.tex > gen/latexmk-$$v.out 2>&1 || { tail -40 gen/latexmk-$$v.out; exit 1; }; \
+	    sed -n -e 's/^\\newsublabel{/\\avi@xsublabel{/p' -e '/^\\nwixadd{/p' \
+	      -e '/^\\gdef\\avivolone/p' -e 's/^\\newlabel/% &/p' gen/$$v.aux > gen/$$v.ext.new; \
+	    cmp -s gen/$$v.ext.new gen/$$v.ext || changed=1; mv gen/$$v.ext.new gen/$$v.ext; \
+	  done; test -n "$$changed" || break; \
+	done
+	@! grep -E 'LaTeX Warning: (Reference|Citation).*undefined|There were undefined' \
+	  doc/gen/avi.log doc/gen/avi-vol2.log \
+	  || { echo "doc: undefined references (see doc/gen/avi.log, doc/gen/avi-vol2.log)"; false; }
+	@! grep 'has been referenced but does not exist' doc/gen/avi.log doc/gen/avi-vol2.log \
+	  || { echo "doc: links to nowhere (see doc/gen/avi.log, doc/gen/avi-vol2.log)"; false; }
+	@grep -q '^\\gdef\\avivolone' doc/gen/avi.ext || { echo "doc: Volume I did not say where it ends"; false; }
+	@awk '/^Overfull \\[hv]box \(/ { w = substr($$3, 2) + 0; if (w > 10) { print FILENAME ": " $$0; bad++ } } \
+	  END { if (bad) { print "doc: " bad " overfull boxes over 10pt (see doc/gen/*.log)"; exit 1 } }' \
+	  doc/gen/avi.log doc/gen/avi-vol2.log
+	cp doc/gen/avi.pdf doc/avi.pdf && cp doc/gen/avi-vol2.pdf doc/avi-vol2.pdf
 
 # The web edition (src/98-web.nw): TeX4ht on the same master, run in
 # doc/gen/html where links put the master, its generated inputs and the
 # figures where it expects them; make4ht copies the pages, the style sheet
 # and the figures they use to doc/html.  A TeX error in the last pass fails it.
 html: doc/html/avi.html
-doc/html/avi.html: doc/avi.tex doc/gen/woven.tex doc/gen/values.tex $(FIGS:%=figures/%.png) \
+doc/html/avi.html: doc/avi.tex doc/preamble.tex doc/indexes.tex $(WOVEN) doc/gen/values.tex $(FIGS:%=figures/%.png) \
 	     doc/gen/bench.stamp doc/gen/concordance.tex tangle/weave/avi-html.cfg
 	rm -rf doc/gen/html doc/html && mkdir -p doc/gen/html
-	ln -s ../../avi.tex doc/gen/html/avi.tex && ln -s .. doc/gen/html/gen \
+	for f in avi preamble indexes; do ln -s ../../$$f.tex doc/gen/html/$$f.tex; done \
+	  && ln -s .. doc/gen/html/gen \
 	  && ln -s ../../../figures doc/gen/html/figures
 	cd doc/gen/html && make4ht -c ../../../tangle/weave/avi-html.cfg -d ../../html \
 	  avi.tex "xhtml,mathml,2" > make4ht.out 2>&1 || { tail -40 make4ht.out; false; }
@@ -306,7 +343,7 @@ bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-lo
 	  echo "# load average (1, 5, 15 min) at the start: $$(cat figures/data/load-start.txt)"; \
 	  echo "# load average (1, 5, 15 min) at the end: $$(cut -d' ' -f1-3 /proc/loadavg)"; \
 	  } > $(REC)/machine.txt
-	rm -f doc/avi.pdf && $(MAKE) --no-print-directory doc
+	rm -f doc/avi.pdf doc/avi-vol2.pdf && $(MAKE) --no-print-directory doc
 
 # The record of the last make bench, committed: a plain make typesets its
 # tables and draws its charts from it (doc/gen/bench.stamp), and the text
@@ -448,9 +485,9 @@ memcheck: $(TEST_BIN) $(FIG_BIN)
 # --- install ---------------------------------------------------------------
 # make install PREFIX=... LIBDIR=... DESTDIR=...: the libraries, the public
 # headers (in include/avi), the pkg-config file, the avi program and its man
-# page, the licence, and the woven PDF if it has been built (make install-doc
-# builds and installs it); make uninstall removes exactly these
-# (src/97-cli.nw).  LIBDIR may be Debian's multiarch path,
+# page, the licence, and the woven PDF's two volumes if they have been built
+# (make install-doc builds and installs them); make uninstall removes exactly these
+# (src/99b-cli.nw).  LIBDIR may be Debian's multiarch path,
 # e.g. LIBDIR=/usr/lib/x86_64-linux-gnu.  Installed as root with no DESTDIR,
 # the shared library is made known to the dynamic linker by $(LDCONFIG).
 PREFIX  ?= /usr/local
@@ -464,7 +501,7 @@ INSTALLED = $(addprefix $(LIBDIR)/,libavi.a libavi.so libavi.so.0 libavi.so.$(VE
 	      pkgconfig/avi.pc) \
 	    $(addprefix $(PREFIX)/,bin/avi share/man/man1/avi.1 \
 	      $(patsubst tangle/lib/%,include/avi/%,$(PUBLIC_H))) \
-	    $(DOCDIR)/avi.pdf $(DOCDIR)/COPYING
+	    $(DOCDIR)/avi.pdf $(DOCDIR)/avi-vol2.pdf $(DOCDIR)/COPYING
 install: $(B)/libavi.a $(B)/libavi.so tangle/lib/avi.pc.in $(CLI_BIN)
 	install -d $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(PREFIX)/include/avi \
 	  $(DESTDIR)$(DOCDIR) $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man1
@@ -478,12 +515,13 @@ install: $(B)/libavi.a $(B)/libavi.so tangle/lib/avi.pc.in $(CLI_BIN)
 	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@LIBDIR@|$(LIBDIR)|' -e 's|@VERSION@|$(VERSION)|' \
 	  tangle/lib/avi.pc.in > $(DESTDIR)$(LIBDIR)/pkgconfig/avi.pc
 	install -m 644 COPYING $(DESTDIR)$(DOCDIR)/COPYING
-	if [ -f doc/avi.pdf ]; then install -m 644 doc/avi.pdf $(DESTDIR)$(DOCDIR)/avi.pdf; fi
+	for v in avi avi-vol2; do if [ -f doc/$$v.pdf ]; then \
+	  install -m 644 doc/$$v.pdf $(DESTDIR)$(DOCDIR)/$$v.pdf; fi; done
 	if [ -z "$(DESTDIR)" ] && [ "$$(id -u)" = 0 ]; then $(LDCONFIG); fi
 
-install-doc: doc/avi.pdf
+install-doc: doc/avi.pdf doc/avi-vol2.pdf
 	install -d $(DESTDIR)$(DOCDIR)
-	install -m 644 doc/avi.pdf $(DESTDIR)$(DOCDIR)/avi.pdf
+	install -m 644 doc/avi.pdf doc/avi-vol2.pdf $(DESTDIR)$(DOCDIR)/
 
 uninstall:
 	rm -f $(addprefix $(DESTDIR),$(INSTALLED))
@@ -497,5 +535,5 @@ record: $(FIGS:%=figures/data/%.summary)
 	tests/golden.sh record
 
 clean:
-	rm -rf build build-san figures/*.pdf figures/*.png figures/data doc/gen doc/avi.pdf doc/html
+	rm -rf build build-san figures/*.pdf figures/*.png figures/data doc/gen doc/avi.pdf doc/avi-vol2.pdf doc/html
 	find tangle -mindepth 1 ! -name README.md ! -name .gitignore -delete

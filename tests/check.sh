@@ -126,7 +126,7 @@ count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-cubic \
 #    most displayed equations is not blank.
 echo "# the web edition"
 book_pages=$(( $(grep -cE '^\\(part|chapter)\*?\{' doc/gen/woven.tex) \
-               + $(grep -cE '^\\chapter\*\{' doc/avi.tex) + 1 ))
+               + $(grep -cE '^\\chapter\*\{' doc/indexes.tex) + 1 ))
 count < <(bash tangle/weave/html-check.sh doc/html "$build/web" "$book_pages")
 
 # 8. The figures are lettered in the document's typeface: every font that a
