@@ -147,5 +147,21 @@ figure_fonts() {
 }
 count < <(figure_fonts)
 
+# 9. The identifier index and the chunks' footers list C only
+#    (weave/c-index.awk, src/10-intro.nw): a chunk tangled into a file that
+#    is not C or C++ (a shell test, a gnuplot script, the manual page) is no
+#    use of a C identifier and has no "Uses" list, while the C files' chunks do.
+echo "# identifier index"
+c_only_index() {
+  awk '/\\nwnotused\{/ { f = $0; sub(/.*\\nwnotused\{/, "", f); sub(/\}.*/, "", f)
+         uses = /\\nwidentuses|\\nwindexuse/
+         if (f ~ /\.([ch]|cc)$/) { c++; cu += uses } else { o++; if (uses) bad = bad " " f } }
+       END { if (bad == "" && o > 0 && cu > 0)
+               print "ok - " o " files that are not C list no C uses (" cu " of " c " C files do)"
+             else print "not ok - uses of C identifiers listed in files that are not C:" bad \
+               " (" o " such files, " cu " C files with uses)" }' doc/gen/woven.tex
+}
+count < <(c_only_index)
+
 echo "$pass passed, $fail failed, $skip skipped"
 [ "$fail" -eq 0 ]
