@@ -259,7 +259,7 @@ doc/avi.pdf doc/avi-vol2.pdf &: $(DOC_DEPS)
 	    sed -n -e 's/^\\newsublabel{/\\avi@xsublabel{/p' -e '/^\\nwixadd{/p' \
 	      -e '/^\\gdef\\avivolone/p' -e 's/^\\newlabel/% &/p' gen/$$v.aux > gen/$$v.ext.new; \
 	    cmp -s gen/$$v.ext.new gen/$$v.ext || changed=1; mv gen/$$v.ext.new gen/$$v.ext; \
-	  done; test -n "$$changed" || break; \
+	  done; test -n "$$changed" || { echo "doc: both volumes settled in round $$round"; break; }; \
 	done
 	@! grep -E 'LaTeX Warning: (Reference|Citation).*undefined|There were undefined' \
 	  doc/gen/avi.log doc/gen/avi-vol2.log \
