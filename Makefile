@@ -1,7 +1,8 @@
 # Makefile of the adaptive Verlet integrators (avi).
 #
-#   make          tangle, build, every figure, the woven PDF in two volumes (doc/avi.pdf, doc/avi-vol2.pdf)
-#                 and its web edition (doc/html/avi.html)
+#   make          tangle, build, every figure, the woven PDF in two volumes
+#                 (doc/avi.pdf, doc/avi-vol2.pdf) and its web edition
+#                 (doc/html/avi.html)
 #   make check    unit tests, golden files, chunk check, the web edition in a
 #                 browser; ends "N passed, N failed"
 #   make record   re-record the golden files from figures/data (commit separately)
@@ -187,7 +188,8 @@ figures/hl-fig5.pdf figures/hl-fig5.png: figures/data/hl-fig5c.summary
 
 # --- the woven document -----------------------------------------------------
 # All chapters are woven in one scope, so chunk cross-references and the
-# identifier index span the whole book; doc/avi.tex is the hand-written master.
+# identifier index span the whole book; doc/avi.tex and doc/avi-vol2.tex are
+# the hand-written masters of its two volumes, doc/preamble.tex their preamble.
 doc: doc/avi.pdf doc/avi-vol2.pdf
 
 doc/gen/woven.tex: $(NW) tangle/weave/c-index.awk | $(B)/.deps
@@ -227,7 +229,7 @@ doc/gen/concordance.tex: tangle/weave/concordance.awk $(NW)
 # The woven text is cut into the PDF's two volumes at the files' boundaries
 # (noweave marks each with \nwfilename): Volume II is VOL2_NW, the unit tests
 # and the program; the index data that noweave writes after the last file
-# goes to both (doc/avi.tex says how the volumes refer to each other).
+# goes to both (doc/preamble.tex says how the volumes refer to each other).
 VOL2_NW := src/99a-tests.nw src/99b-cli.nw
 WOVEN   := doc/gen/woven-1.tex doc/gen/woven-2.tex doc/gen/woven-ix.tex
 $(WOVEN) &: doc/gen/woven.tex
@@ -246,8 +248,9 @@ $(WOVEN) &: doc/gen/woven.tex
 # Each volume reads what the other's .aux says of its pages, chunks and
 # identifiers (doc/gen/<master>.ext, which holds the other labels as comments
 # so that latexmk sees them change too): they are typeset in turn until a
-# round changes neither .ext, at most four rounds.  The build fails on an undefined
-# reference or an overfull box over 10pt in either.
+# round changes neither .ext, at most four rounds.  The build fails on an
+# undefined reference, a link to nowhere or an overfull box over 10pt in
+# either.
 DOC_DEPS = doc/avi.tex doc/avi-vol2.tex doc/preamble.tex doc/indexes.tex $(WOVEN) \
 	   doc/gen/values.tex $(FIGS:%=figures/%.pdf) doc/gen/bench.stamp doc/gen/concordance.tex
 LATEXMK  = latexmk -pdf -interaction=nonstopmode -halt-on-error -outdir=gen -quiet
