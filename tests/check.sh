@@ -163,5 +163,26 @@ c_only_index() {
 }
 count < <(c_only_index)
 
+#    The filter on a small web: a library file whose comment says "steps", a
+#    test program that defines a helper steps and calls the library's
+#    lib_fn, and a shell script that names both.  Only the test's call of
+#    lib_fn is a use; the comment's word and the script's words are not.
+c_index_scope() {
+  local tmp out; tmp=$(mktemp -d)
+  printf '%s\n' '@ A small web.' '<<lib/x.c>>=' '/* one of the library'"'"'s steps */' \
+    'int lib_fn(void) { return 1; }' '@ %def lib_fn' '<<test/t.c>>=' \
+    'static int steps(void) { return lib_fn(); }' '@ %def steps' '<<test/t.sh>>=' \
+    'echo steps lib_fn' '@' > "$tmp/t.nw"
+  noweave -n -filter 'awk -v kind=defn -f tangle/weave/c-index.awk' -index \
+    -filter 'awk -v kind=use -f tangle/weave/c-index.awk' "$tmp/t.nw" > "$tmp/t.tex" 2>&1
+  out=$(awk '/\\nwnotused\{/ { f = $0; sub(/.*\\nwnotused\{/, "", f); sub(/\}.*/, "", f)
+               n = gsub(/\\nwindexuse\{/, "&"); printf "%s:%d ", f, n }' "$tmp/t.tex")
+  if [ "$out" = "lib/x.c:0 test/t.c:1 test/t.sh:0 " ] && grep -q 'nwindexuse{\\nwixident{lib{\\_}fn}}' "$tmp/t.tex"
+  then echo "ok - the index keeps a program's use of the library and drops words: $out"
+  else echo "not ok - the uses per file should be lib/x.c:0 test/t.c:1 test/t.sh:0, are: $out"; fi
+  rm -rf "$tmp"
+}
+count < <(c_index_scope)
+
 echo "$pass passed, $fail failed, $skip skipped"
 [ "$fail" -eq 0 ]
