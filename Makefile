@@ -278,16 +278,19 @@ doc/avi.pdf doc/avi-vol2.pdf &: $(DOC_DEPS)
 # The web edition (src/98-web.nw): TeX4ht on the same master, run in
 # doc/gen/html where links put the master, its generated inputs and the
 # figures where it expects them; make4ht copies the pages, the style sheet
-# and the figures they use to doc/html.  A TeX error in the last pass fails it.
+# and the figures they use to doc/html; html-linear.sh then links the pages in
+# reading order.  A TeX error in the last pass fails it.
 html: doc/html/avi.html
 doc/html/avi.html: doc/avi.tex doc/preamble.tex doc/indexes.tex $(WOVEN) doc/gen/values.tex $(FIGS:%=figures/%.png) \
-	     doc/gen/bench.stamp doc/gen/concordance.tex tangle/weave/avi-html.cfg
+	     doc/gen/bench.stamp doc/gen/concordance.tex tangle/weave/avi-html.cfg \
+	     tangle/weave/html-linear.sh
 	rm -rf doc/gen/html doc/html && mkdir -p doc/gen/html
 	for f in avi preamble indexes; do ln -s ../../$$f.tex doc/gen/html/$$f.tex; done \
 	  && ln -s .. doc/gen/html/gen \
 	  && ln -s ../../../figures doc/gen/html/figures
 	cd doc/gen/html && make4ht -c ../../../tangle/weave/avi-html.cfg -d ../../html \
 	  avi.tex "xhtml,mathml,2" > make4ht.out 2>&1 || { tail -40 make4ht.out; false; }
+	sh tangle/weave/html-linear.sh doc/html
 	@! grep -A3 '^! ' doc/gen/html/avi.log || { echo "doc/html: TeX errors (see doc/gen/html/avi.log)"; false; }
 	@test -s $@ || { echo "doc/html: make4ht wrote no $@"; false; }
 
