@@ -482,7 +482,7 @@ VALGRIND = valgrind -q --error-exitcode=9 --leak-check=full --errors-for-leak-ki
 memcheck: $(TEST_BIN) $(FIG_BIN)
 	@command -v valgrind > /dev/null || { echo "make memcheck needs valgrind (apt-get install valgrind)"; exit 2; }
 	@tmp=$$(mktemp -d); fail=0; \
-	for t in $(TEST_BIN) $(FIG_BIN); do \
+	for t in $(filter $(B)/test/test-%,$(TEST_BIN)) $(FIG_BIN); do \
 	  case $$t in */fig/*) args="--out $$tmp";; *) args=;; esac; \
 	  if $(VALGRIND) $$t $$args > /dev/null 2> $$tmp/err; then echo "ok - $$t"; \
 	  else echo "not ok - $$t"; grep -v '^\[' $$tmp/err | head -20; fail=1; fi; \
