@@ -157,6 +157,13 @@ $(B)/libavi-ref.a: $(REF_O)
 $(QUAD_BIN): $(B)/libavi-ref.a
 $(QUAD_BIN): LDLIBS += -lquadmath
 
+# the first program of Chapter 1 (src/10-intro.nw), against the build tree
+EXAMPLE_BIN := $(B)/examples/henon-heiles
+$(EXAMPLE_BIN): $(B)/examples/%: tangle/examples/%.c $(B)/libavi.a
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(INC) $(LDFLAGS) $< $(B)/libavi.a $(LDLIBS) -o $@
+all: $(EXAMPLE_BIN)
+
 # the command-line program avi (src/99b-cli.nw)
 cli: $(CLI_BIN)
 $(CLI_BIN): $(B)/cli/%: $(B)/cli/%.o $(B)/libavi.a
@@ -534,7 +541,7 @@ uninstall:
 	-rmdir $(DESTDIR)$(PREFIX)/include/avi $(DESTDIR)$(DOCDIR) 2>/dev/null
 
 # --- tests ------------------------------------------------------------------
-check: $(TEST_BIN) $(CLI_BIN) $(FIGS:%=figures/data/%.summary) figures doc/html/avi.html
+check: $(TEST_BIN) $(CLI_BIN) $(EXAMPLE_BIN) $(FIGS:%=figures/data/%.summary) figures doc/html/avi.html
 	@tests/check.sh $(B) $(NW)
 
 record: $(FIGS:%=figures/data/%.summary)
