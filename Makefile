@@ -214,7 +214,8 @@ doc/gen/woven.tex: $(NW) tangle/weave/c-index.awk | $(B)/.deps
 doc/gen/values.tex: $(FIGS:%=figures/data/%.summary) doc/gen/bench-steps.summary \
 	  doc/gen/bench-kepler-wp.summary doc/gen/bench-threebody-wp.summary \
 	  doc/gen/bench-kepler-long.summary doc/gen/bench-pendulum.summary \
-	  doc/gen/bench-cubic-wp.summary doc/gen/bench-atlas.summary doc/gen/cost-guard.summary
+	  doc/gen/bench-cubic-wp.summary doc/gen/bench-atlas.summary doc/gen/bench-pairs.summary \
+	  doc/gen/cost-guard.summary
 	@mkdir -p doc/gen
 	awk 'function fmt(v, d,  s, m, e) { \
 	       if (v == int(v) && v < 1e15 && v > -1e15) return sprintf("%d", v); \
@@ -348,6 +349,7 @@ bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-lo
 	$(call STAMP,figures/data/atlas.tmp,figures/data/bench-atlas.tsv)
 	$(call STAMP,figures/data/atlas-summary.tmp,figures/data/bench-atlas-summary.tsv,show)
 	{ $(MACHINE); $(B)/bench/bench-pendulum; } | tee figures/data/bench-pendulum.tsv
+	{ $(MACHINE); $(B)/bench/bench-pairs; } | tee figures/data/bench-pairs.tsv
 	$(B)/bench/bench-targets figures/data/targets.tmp
 	$(call STAMP,figures/data/targets.tmp,figures/data/bench-targets.tsv,show)
 	@mkdir -p $(REC)
@@ -365,7 +367,7 @@ REC       := doc/bench
 BENCH_TSV := bench-steps bench-steps-loaded bench-kepler-wp bench-kepler-wp-needs \
              bench-kepler-long bench-kepler-long-costs bench-cubic-wp bench-cubic-wp-needs \
              bench-threebody-wp bench-threebody-wp-reference bench-threebody-wp-needs \
-             bench-atlas bench-atlas-summary bench-pendulum bench-targets
+             bench-atlas bench-atlas-summary bench-pendulum bench-targets bench-pairs
 BENCH_GP  := $(patsubst %,tangle/bench/%.gp,bench-kepler-wp bench-kepler-long bench-cubic-wp \
              bench-threebody-wp bench-atlas)
 PLOT  = gnuplot -e "datadir='$(REC)'; outdir='figures'" tangle/bench/$(1).gp
@@ -471,6 +473,17 @@ doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-
 	    print k "_step", $$2; print k "_t", $$4; print k "_steps", $$5; print k "_evals", $$6; \
 	    print k "_error", $$7; print k "_s", $$8 }' \
 	  $(REC)/bench-pendulum.tsv > doc/gen/bench-pendulum.summary
+	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{rrrr}" ; \
+	    print "$$N$$ & pairs & ns/pair, min & median\\\\ \\hline" } \
+	  /^# spread/ { note = substr($$0, 3) } /^# cpu/ { cpu = substr($$0, 8) } \
+	  /^# compiler/ { cc = substr($$0, 13) } /^#/ { next } \
+	  { printf "%s & %s & %s & %s\\\\\n", $$1, $$2, $$3, $$4 } \
+	  END { sub(/; sink.*/, "", note); \
+	    print "\\end{tabular}\\\\[1ex] " note "; " cpu "; " cc "\\end{center}" }' \
+	  $(REC)/bench-pairs.tsv > doc/gen/bench-pairs.tex
+	awk -F'\t' '/^# spread/ { n = split($$0, w, /[^0-9.]+/); print "spread", w[2] } /^#/ { next } \
+	  { print "n" $$1 "_min", $$3; print "n" $$1 "_median", $$4 }' \
+	  $(REC)/bench-pairs.tsv > doc/gen/bench-pairs.summary
 	awk -f tangle/bench/bench-cubic-summary.awk $(REC)/bench-cubic-wp.tsv \
 	  $(REC)/bench-cubic-wp-needs.tsv > doc/gen/bench-cubic-wp.summary
 	awk -f tangle/bench/bench-atlas-summary.awk $(REC)/bench-atlas.tsv \
@@ -478,7 +491,8 @@ doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-
 	touch $@
 doc/gen/bench-steps.summary doc/gen/bench-kepler-wp.summary doc/gen/bench-threebody-wp.summary \
   doc/gen/bench-kepler-long.summary doc/gen/bench-pendulum.summary \
-  doc/gen/bench-cubic-wp.summary doc/gen/bench-atlas.summary: doc/gen/bench.stamp
+  doc/gen/bench-cubic-wp.summary doc/gen/bench-atlas.summary \
+  doc/gen/bench-pairs.summary: doc/gen/bench.stamp
 
 # --- memcheck ---------------------------------------------------------------
 # make memcheck: every unit test and every figure program (with its defaults,
