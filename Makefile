@@ -151,7 +151,7 @@ $(B)/bench/bench-atlas: $(FIGKIT_O)
 # libgcc-12-dev, which gcc depends on) only into the programs that use them.
 REF_O    := $(patsubst tangle/%.c,$(B)/%.o,$(REF_C))
 QUAD_BIN := $(B)/test/test-ref $(B)/test/test-after $(B)/bench/bench-kepler-wp \
-            $(B)/bench/bench-threebody-wp $(B)/bench/bench-targets
+            $(B)/bench/bench-threebody-wp $(B)/bench/bench-targets $(B)/fig/outer-solar
 $(B)/libavi-ref.a: $(REF_O)
 	rm -f $@ && ar rcs $@ $^
 $(QUAD_BIN): $(B)/libavi-ref.a

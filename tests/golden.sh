@@ -11,13 +11,15 @@
 #     FILE  NUMDIFF-OPTIONS...
 # with FILE a name in figures/data/.  Lines that start with '#' are comments.
 # Timing keys (wall_s, and any key that starts with wall_) vary from run
-# to run and are never compared.
+# to run and are never compared; nor are keys that start with roundoff_,
+# numbers that measure roundoff itself (another compiler changes them by
+# their own size), which their figure's claims test bounds instead.
 set -u
 cd "$(dirname "$0")/.."
 mode=${1:-compare}
 fresh=figures/data
 gold=tests/golden
-strip_timing() { grep -v '^wall_' "$1" || true; }
+strip_timing() { grep -v -e '^wall_' -e '^roundoff_' "$1" || true; }
 
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 shopt -s nullglob
