@@ -119,6 +119,14 @@ count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-atlas \
             0.1 0.99 0.009 0.3 0.5 0.4 1.05134 0.01 1.2 3.2 5.623 0.18 0.32 0.56)
 count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-cubic \
             0.3 0.054 0.5 0.25 0.8 0.4 0.2 0.002 0.001 1.0512 1.0524 0.28 0.41)
+#    The worked examples in space (src/93b-space.nw) quote their figures'
+#    summaries the same way: the decimals left are the triples' alpha and
+#    e0, Mardling and Aarseth's coefficient, the book's section number,
+#    data and Pluto's mass, the claims' thresholds, the bound on the
+#    sweep's eps_SA and the obliquity.
+count < <(tests/prose-numbers.sh src/93b-space.nw sec:kozai 0.005 0.01 0.02 0.05 2.8 0.1)
+count < <(tests/prose-numbers.sh src/93b-space.nw sec:outer-solar \
+            2.4 1.00000597682 2.95912208286 1.5 1.3 23.4392911)
 
 # 7. The web edition, read in headless Chromium (src/98-web.nw): every page
 #    loads without console messages, its equations are laid out as MathML,
