@@ -498,7 +498,8 @@ doc/gen/bench-steps.summary doc/gen/bench-kepler-wp.summary doc/gen/bench-threeb
 # make memcheck: every unit test and every figure program (with its defaults,
 # writing into a temporary directory) under valgrind; any error, or a leak
 # that is definitely lost, fails it.  Not part of make check: it takes about
-# eighteen minutes (rf-fig1's grid alone, eight; measured, all clean).
+# twenty-seven minutes (rf-fig1's grid alone, eight; kozai-lidov and
+# outer-solar, five and four; measured, all clean).
 VALGRIND = valgrind -q --error-exitcode=9 --leak-check=full --errors-for-leak-kinds=definite
 memcheck: $(TEST_BIN) $(FIG_BIN)
 	@command -v valgrind > /dev/null || { echo "make memcheck needs valgrind (apt-get install valgrind)"; exit 2; }
