@@ -150,7 +150,7 @@ $(B)/bench/bench-atlas: $(FIGKIT_O)
 # their own, not part of libavi, linked with GCC's libquadmath (Debian:
 # libgcc-12-dev, which gcc depends on) only into the programs that use them.
 REF_O    := $(patsubst tangle/%.c,$(B)/%.o,$(REF_C))
-QUAD_BIN := $(B)/test/test-ref $(B)/test/test-after $(B)/bench/bench-kepler-wp \
+QUAD_BIN := $(B)/test/test-ref $(B)/test/test-after $(B)/test/test-gbs $(B)/bench/bench-kepler-wp \
             $(B)/bench/bench-threebody-wp $(B)/bench/bench-targets $(B)/fig/outer-solar
 $(B)/libavi-ref.a: $(REF_O)
 	rm -f $@ && ar rcs $@ $^
