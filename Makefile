@@ -215,7 +215,7 @@ doc/gen/values.tex: $(FIGS:%=figures/data/%.summary) doc/gen/bench-steps.summary
 	  doc/gen/bench-kepler-wp.summary doc/gen/bench-threebody-wp.summary \
 	  doc/gen/bench-kepler-long.summary doc/gen/bench-pendulum.summary \
 	  doc/gen/bench-cubic-wp.summary doc/gen/bench-atlas.summary doc/gen/bench-pairs.summary \
-	  doc/gen/cost-guard.summary
+	  doc/gen/bench-targets.summary doc/gen/cost-guard.summary
 	@mkdir -p doc/gen
 	awk 'function fmt(v, d,  s, m, e) { \
 	       if (v == int(v) && v < 1e15 && v > -1e15) return sprintf("%d", v); \
@@ -484,6 +484,12 @@ doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-
 	awk -F'\t' '/^# spread/ { n = split($$0, w, /[^0-9.]+/); print "spread", w[2] } /^#/ { next } \
 	  { print "n" $$1 "_min", $$3; print "n" $$1 "_median", $$4 }' \
 	  $(REC)/bench-pairs.tsv > doc/gen/bench-pairs.summary
+	awk -F'\t' '/^#/ { next } \
+	  { k = $$1 "_t" $$2 "_" $$3 "_" $$4; gsub(/[^a-z0-9]+/, "_", k); print k "_met", $$5; \
+	    if ($$5 == 1) { print k "_forces", $$7; print k "_seconds", $$9; \
+	      if ($$11 != "nan") print k "_ratio", $$11 } \
+	    if ($$8 != "inf") print k "_error", $$8 }' \
+	  $(REC)/bench-targets.tsv > doc/gen/bench-targets.summary
 	awk -f tangle/bench/bench-cubic-summary.awk $(REC)/bench-cubic-wp.tsv \
 	  $(REC)/bench-cubic-wp-needs.tsv > doc/gen/bench-cubic-wp.summary
 	awk -f tangle/bench/bench-atlas-summary.awk $(REC)/bench-atlas.tsv \
@@ -492,7 +498,7 @@ doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-
 doc/gen/bench-steps.summary doc/gen/bench-kepler-wp.summary doc/gen/bench-threebody-wp.summary \
   doc/gen/bench-kepler-long.summary doc/gen/bench-pendulum.summary \
   doc/gen/bench-cubic-wp.summary doc/gen/bench-atlas.summary \
-  doc/gen/bench-pairs.summary: doc/gen/bench.stamp
+  doc/gen/bench-pairs.summary doc/gen/bench-targets.summary: doc/gen/bench.stamp
 
 # --- memcheck ---------------------------------------------------------------
 # make memcheck: every unit test and every figure program (with its defaults,
