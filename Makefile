@@ -151,7 +151,8 @@ $(B)/bench/bench-atlas: $(FIGKIT_O)
 # libgcc-12-dev, which gcc depends on) only into the programs that use them.
 REF_O    := $(patsubst tangle/%.c,$(B)/%.o,$(REF_C))
 QUAD_BIN := $(B)/test/test-ref $(B)/test/test-after $(B)/test/test-gbs $(B)/bench/bench-kepler-wp \
-            $(B)/bench/bench-threebody-wp $(B)/bench/bench-targets $(B)/fig/outer-solar
+            $(B)/bench/bench-threebody-wp $(B)/bench/bench-targets $(B)/fig/outer-solar \
+            $(B)/fig/burrau
 $(B)/libavi-ref.a: $(REF_O)
 	rm -f $@ && ar rcs $@ $^
 $(QUAD_BIN): $(B)/libavi-ref.a
@@ -372,6 +373,7 @@ BENCH_GP  := $(patsubst %,tangle/bench/%.gp,bench-kepler-wp bench-kepler-long be
              bench-threebody-wp bench-atlas)
 PLOT  = gnuplot -e "datadir='$(REC)'; outdir='figures'" tangle/bench/$(1).gp
 doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-cubic-summary.awk \
+  tangle/bench/gbs-targets.tsv \
   tangle/bench/bench-atlas-summary.awk
 	@mkdir -p doc/gen figures
 	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{llrrrrrl}" ; \
@@ -490,6 +492,16 @@ doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-
 	      if ($$11 != "nan") print k "_ratio", $$11 } \
 	    if ($$8 != "inf") print k "_error", $$8 }' \
 	  $(REC)/bench-targets.tsv > doc/gen/bench-targets.summary
+	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{lrrrrrl}" ; \
+	    print "problem & $$t_f$$ & error & at most & logh-gbs & rk8pd & time ratio\\\\ \\hline" } \
+	  /^# cpu/ { cpu = substr($$0, 8) } /^#/ { next } \
+	  FNR == NR { split($$0, f, /[ \t]+/); k = f[1] " " f[2] " " f[3]; want[++n] = k; most[k] = f[4]; next } \
+	  $$4 == "logh-gbs" || $$4 == "rk8pd" { k = $$1 " " $$2 " " $$3; \
+	    cell[k, $$4] = $$5 == 1 ? $$7 : "-- (" $$8 ")"; if ($$4 == "logh-gbs" && $$5 == 1 && $$11 != "nan") r[k] = $$11 } \
+	  END { for (i = 1; i <= n; i++) { k = want[i]; split(k, w, " "); \
+	      printf "%s & %s & %s & %s & %s & %s & %s\\\\\n", w[1], w[2], w[3], most[k], cell[k, "logh-gbs"], cell[k, "rk8pd"], r[k] } \
+	    print "\\end{tabular}\\\\[1ex] forces, or the best error reached (--); " cpu "\\end{center}" }' \
+	  tangle/bench/gbs-targets.tsv $(REC)/bench-targets.tsv > doc/gen/gbs-targets.tex
 	awk -f tangle/bench/bench-cubic-summary.awk $(REC)/bench-cubic-wp.tsv \
 	  $(REC)/bench-cubic-wp-needs.tsv > doc/gen/bench-cubic-wp.summary
 	awk -f tangle/bench/bench-atlas-summary.awk $(REC)/bench-atlas.tsv \
