@@ -373,7 +373,7 @@ BENCH_GP  := $(patsubst %,tangle/bench/%.gp,bench-kepler-wp bench-kepler-long be
              bench-threebody-wp bench-atlas)
 PLOT  = gnuplot -e "datadir='$(REC)'; outdir='figures'" tangle/bench/$(1).gp
 doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-cubic-summary.awk \
-  tangle/bench/gbs-targets.tsv \
+  tangle/bench/gbs-targets.tsv tangle/bench/bench-choose.awk \
   tangle/bench/bench-atlas-summary.awk
 	@mkdir -p doc/gen figures
 	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{llrrrrrl}" ; \
@@ -502,6 +502,9 @@ doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-
 	      printf "%s & %s & %s & %s & %s & %s & %s\\\\\n", w[1], w[2], w[3], most[k], cell[k, "logh-gbs"], cell[k, "rk8pd"], r[k] } \
 	    print "\\end{tabular}\\\\[1ex] forces, or the best error reached (--); " cpu "\\end{center}" }' \
 	  tangle/bench/gbs-targets.tsv $(REC)/bench-targets.tsv > doc/gen/gbs-targets.tex
+	awk -f tangle/bench/bench-choose.awk $(REC)/bench-kepler-wp-needs.tsv \
+	  $(REC)/bench-threebody-wp-needs.tsv $(REC)/bench-cubic-wp-needs.tsv \
+	  $(REC)/bench-targets.tsv > doc/gen/bench-choose.tex
 	awk -f tangle/bench/bench-cubic-summary.awk $(REC)/bench-cubic-wp.tsv \
 	  $(REC)/bench-cubic-wp-needs.tsv > doc/gen/bench-cubic-wp.summary
 	awk -f tangle/bench/bench-atlas-summary.awk $(REC)/bench-atlas.tsv \
