@@ -150,7 +150,7 @@ $(B)/bench/bench-atlas: $(FIGKIT_O)
 # their own, not part of libavi, linked with GCC's libquadmath (Debian:
 # libgcc-12-dev, which gcc depends on) only into the programs that use them.
 REF_O    := $(patsubst tangle/%.c,$(B)/%.o,$(REF_C))
-QUAD_BIN := $(B)/test/test-ref $(B)/test/test-after $(B)/test/test-gbs $(B)/bench/bench-kepler-wp \
+QUAD_BIN := $(B)/test/test-ref $(B)/test/test-after $(B)/test/test-gbs $(B)/bench/bench-kepler-wp $(B)/bench/bench-logh \
             $(B)/bench/bench-threebody-wp $(B)/bench/bench-targets $(B)/fig/outer-solar \
             $(B)/fig/burrau
 $(B)/libavi-ref.a: $(REF_O)
@@ -216,7 +216,7 @@ doc/gen/values.tex: $(FIGS:%=figures/data/%.summary) doc/gen/bench-steps.summary
 	  doc/gen/bench-kepler-wp.summary doc/gen/bench-threebody-wp.summary \
 	  doc/gen/bench-kepler-long.summary doc/gen/bench-pendulum.summary \
 	  doc/gen/bench-cubic-wp.summary doc/gen/bench-atlas.summary doc/gen/bench-pairs.summary \
-	  doc/gen/bench-targets.summary doc/gen/cost-guard.summary
+	  doc/gen/bench-targets.summary doc/gen/bench-logh.summary doc/gen/cost-guard.summary
 	@mkdir -p doc/gen
 	awk 'function fmt(v, d,  s, m, e) { \
 	       if (v == int(v) && v < 1e15 && v > -1e15) return sprintf("%d", v); \
@@ -351,6 +351,7 @@ bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-lo
 	$(call STAMP,figures/data/atlas-summary.tmp,figures/data/bench-atlas-summary.tsv,show)
 	{ $(MACHINE); $(B)/bench/bench-pendulum; } | tee figures/data/bench-pendulum.tsv
 	{ $(MACHINE); $(B)/bench/bench-pairs; } | tee figures/data/bench-pairs.tsv
+	{ $(MACHINE); $(B)/bench/bench-logh; } | tee figures/data/bench-logh.tsv
 	$(B)/bench/bench-targets figures/data/targets.tmp
 	$(call STAMP,figures/data/targets.tmp,figures/data/bench-targets.tsv,show)
 	@mkdir -p $(REC)
@@ -368,13 +369,13 @@ REC       := doc/bench
 BENCH_TSV := bench-steps bench-steps-loaded bench-kepler-wp bench-kepler-wp-needs \
              bench-kepler-long bench-kepler-long-costs bench-cubic-wp bench-cubic-wp-needs \
              bench-threebody-wp bench-threebody-wp-reference bench-threebody-wp-needs \
-             bench-atlas bench-atlas-summary bench-pendulum bench-targets bench-pairs
+             bench-atlas bench-atlas-summary bench-pendulum bench-targets bench-pairs bench-logh
 BENCH_GP  := $(patsubst %,tangle/bench/%.gp,bench-kepler-wp bench-kepler-long bench-cubic-wp \
              bench-threebody-wp bench-atlas)
 PLOT  = gnuplot -e "datadir='$(REC)'; outdir='figures'" tangle/bench/$(1).gp
 doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-cubic-summary.awk \
   tangle/bench/gbs-targets.tsv tangle/bench/bench-choose.awk \
-  tangle/bench/bench-atlas-summary.awk
+  tangle/bench/bench-atlas-summary.awk tangle/bench/bench-logh-summary.awk tangle/bench/bench-logh-table.awk
 	@mkdir -p doc/gen figures
 	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{llrrrrrl}" ; \
 	    print "problem & scheme & ns/step & ratio & min--max & loaded & forces/step & target\\\\ \\hline" } \
@@ -509,11 +510,13 @@ doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-
 	  $(REC)/bench-cubic-wp-needs.tsv > doc/gen/bench-cubic-wp.summary
 	awk -f tangle/bench/bench-atlas-summary.awk $(REC)/bench-atlas.tsv \
 	  $(REC)/bench-atlas-summary.tsv > doc/gen/bench-atlas.summary
+	awk -f tangle/bench/bench-logh-summary.awk $(REC)/bench-logh.tsv > doc/gen/bench-logh.summary
+	awk -f tangle/bench/bench-logh-table.awk $(REC)/bench-logh.tsv > doc/gen/bench-logh.tex
 	touch $@
 doc/gen/bench-steps.summary doc/gen/bench-kepler-wp.summary doc/gen/bench-threebody-wp.summary \
   doc/gen/bench-kepler-long.summary doc/gen/bench-pendulum.summary \
   doc/gen/bench-cubic-wp.summary doc/gen/bench-atlas.summary \
-  doc/gen/bench-pairs.summary doc/gen/bench-targets.summary: doc/gen/bench.stamp
+  doc/gen/bench-pairs.summary doc/gen/bench-targets.summary doc/gen/bench-logh.summary: doc/gen/bench.stamp
 
 # --- memcheck ---------------------------------------------------------------
 # make memcheck: every unit test and every figure program (with its defaults,

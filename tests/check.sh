@@ -115,6 +115,7 @@ count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-three-body \
 count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-long \
             1.09 0.3 0.99 0.05 0.01 0.002)
 count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-pendulum)
+count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-logh 0.99 0.01 0.1 1.3 0.08 0.115)
 count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-atlas \
             0.1 0.99 0.009 0.3 0.5 0.4 1.05134 0.01 1.2 3.2 5.623 0.18 0.32 0.56)
 count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-cubic \
