@@ -156,6 +156,8 @@ QUAD_BIN := $(B)/test/test-ref $(B)/test/test-after $(B)/test/test-gbs $(B)/benc
 $(B)/libavi-ref.a: $(REF_O)
 	rm -f $@ && ar rcs $@ $^
 $(QUAD_BIN): $(B)/libavi-ref.a
+# test-gbs runs GSL's rk8pd through the figure kit's harness too
+$(B)/test/test-gbs: $(FIGKIT_O)
 $(QUAD_BIN): LDLIBS += -lquadmath
 
 # the first program of Chapter 1 (src/10-intro.nw), against the build tree
@@ -171,7 +173,7 @@ $(CLI_BIN): $(B)/cli/%: $(B)/cli/%.o $(B)/libavi.a
 	$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
 
 $(TEST_BIN): $(B)/test/%: $(B)/test/%.o $(B)/libavi.a
-	$(CC) $(CFLAGS) $(LDFLAGS) $^ -lcmocka $(LDLIBS) -o $@
+	$(CC) $(CFLAGS) $(LDFLAGS) $(filter %.o %/libavi-ref.a,$^) $(B)/libavi.a -lcmocka $(LDLIBS) -o $@
 
 $(BENCH_BIN): $(B)/bench/%: $(B)/bench/%.o $(B)/libavi.a
 	$(CC) $(CFLAGS) $(LDFLAGS) $(filter %.o %/libavi-ref.a,$^) $(B)/libavi.a $(LDLIBS) -o $@
