@@ -429,8 +429,8 @@ doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-
 	  { printf "%s & %s & %s & %s & %s & %s & %s & %s\\\\\n", $$1, $$2, $$3, $$4, $$5, $$6, $$7, $$8 } \
 	  END { print "\\end{tabular}\\\\[1ex] " note "; " cpu "; " cc "\\end{center}" }' \
 	  $(REC)/bench-pendulum.tsv > doc/gen/bench-pendulum.tex
-	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{lrrrrl}" ; \
-	    print "method & parameter & forces & error & s & ratio to rk8pd, median (min--max)\\\\ \\hline" } \
+	awk -F'\t' 'BEGIN { print "{\\small\\begin{longtable}{lrrrrl}" ; \
+	    print "method & parameter & forces & error & s & ratio to rk8pd, median (min--max)\\\\ \\hline\\endhead" } \
 	  /^# largest/ { note = substr($$0, 3) } /^# cpu/ { cpu = substr($$0, 8) } \
 	  /^# compiler/ { cc = substr($$0, 13) } /^#/ { next } \
 	  { g = $$1 " " $$2 " " $$3; if (g != last) { last = g; \
@@ -438,7 +438,7 @@ doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-
 	    met = $$5 == 1; r = ($$11 == "nan" || $$4 == "rk8pd") ? "" : $$11 " (" $$10 "--" $$12 ")"; \
 	    printf "\\quad %s & %s & %s & %s & %s & %s\\\\\n", $$4, (met ? $$6 : "--"), (met ? $$7 : "--"), \
 	      $$8 (met ? "" : " (best)"), (met ? $$9 : "--"), r } \
-	  END { print "\\end{tabular}\\\\[1ex] " note "; " cpu "; " cc "\\end{center}" }' \
+	  END { print "\\end{longtable}}\\par\\noindent{\\small " note "; " cpu "; " cc "}\\par" }' \
 	  $(REC)/bench-targets.tsv > doc/gen/bench-targets.tex
 	awk -F'\t' 'FNR == 1 { file++ } /^#/ { next } \
 	  { k = $$1 "_" $$2; gsub(/[^a-z0-9]+/, "_", k) } \
