@@ -128,6 +128,11 @@ count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-cubic \
 count < <(tests/prose-numbers.sh src/93b-space.nw sec:kozai 0.005 0.01 0.02 0.05 2.8 0.1)
 count < <(tests/prose-numbers.sh src/93b-space.nw sec:outer-solar \
             2.4 1.00000597682 2.95912208286 1.5 1.3 23.4392911)
+#    The hierarchical triple (src/86-hierarchical.nw): the pericentre 0.1,
+#    the target's 2.5e5 forces, the rotation step 0.7 of its starts, and
+#    IAS15's numbers as issue 34 reports them (2.4e5, 3.6e-12, 1.2e-10).
+count < <(tests/prose-numbers.sh src/86-hierarchical.nw sec:hier-triple \
+            0.1 2.5 0.7 2.4 3.6 1.2)
 
 # 7. The web edition, read in headless Chromium (src/98-web.nw): every page
 #    loads without console messages, its equations are laid out as MathML,
