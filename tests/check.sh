@@ -107,7 +107,7 @@ count < <(tests/prose-numbers.sh src/95-bench.nw sec:cost-guard \
 count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-steps \
             0.5 0.01 0.4 0.1 1.6 2.5 1.3 2.6 3.9 1.25 2.0 1.8 3.361)
 count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-targets \
-            0.99 4.5 1.2 1.25)
+            0.99 4.5 1.2 1.25 0.9)
 count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-wp \
             0.5 0.9 0.99 0.999 0.1 0.001 0.8 0.01 0.002 99.5)
 count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-three-body \
