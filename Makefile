@@ -311,7 +311,8 @@ doc/html/avi.html: doc/avi.tex doc/preamble.tex doc/indexes.tex $(WOVEN) doc/gen
 # make bench: timings, never part of make or make check.  Each table records
 # the machine and the flags it was measured with, and is typeset in the
 # "Speed against accuracy" chapter of the PDF (rebuilt here).
-MACHINE = echo "\# cpu: $$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')"; \
+CPUINFO = grep -m1 '^$(1)' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//'
+MACHINE = echo "\# cpu: $$($(call CPUINFO,model name)) (family $$($(call CPUINFO,cpu family)), model $$($(call CPUINFO,model[[:space:]])), $$($(call CPUINFO,cpu MHz)) MHz)"; \
 	  echo "\# cores: $$(nproc)"; echo "\# compiler: $$($(CC) --version | head -1)"; \
 	  echo "\# flags: $(CFLAGS)"
 # A bench table gets the machine's record on top (STAMP: the program's
