@@ -215,7 +215,7 @@ doc/gen/woven.tex: $(NW) tangle/weave/c-index.awk | $(B)/.deps
 # Numbers quoted in the text come from the figures' summaries: each line
 # "key value" of figures/data/<id>.summary becomes \val{<id>}{key} (three
 # significant digits) and \valfull{<id>}{key} (six), exponents as powers of 10
-# below 1e-3.
+# below 1e-3 ({10}^{e}: one number 10 with its exponent, in the web edition too).
 doc/gen/values.tex: $(FIGS:%=figures/data/%.summary) doc/gen/bench-steps.summary \
 	  doc/gen/bench-kepler-wp.summary doc/gen/bench-threebody-wp.summary \
 	  doc/gen/bench-kepler-long.summary doc/gen/bench-pendulum.summary \
@@ -228,7 +228,7 @@ doc/gen/values.tex: $(FIGS:%=figures/data/%.summary) doc/gen/bench-steps.summary
 	       if (v != 0 && v < 1e-3 && v > -1e-3) s = sprintf("%." (d - 1) "e", v); \
 	       if (s !~ /e/) return s; \
 	       split(s, m, "e"); e = m[2] + 0; \
-	       return "\\ensuremath{" m[1] "\\times10^{" e "}}" } \
+	       return "\\ensuremath{" m[1] "\\times{10}^{" e "}}" } \
 	     FNR == 1 { id = FILENAME; sub(/.*\//, "", id); sub(/\.summary$$/, "", id) } \
 	     NF == 2 { printf "\\expandafter\\def\\csname val:%s:%s\\endcsname{%s}\n", id, $$1, fmt($$2, 3); \
 	               printf "\\expandafter\\def\\csname valfull:%s:%s\\endcsname{%s}\n", id, $$1, fmt($$2, 6) }' \
@@ -292,9 +292,10 @@ doc/avi.pdf doc/avi-vol2.pdf &: $(DOC_DEPS)
 # doc/gen/html where links put the master, its generated inputs and the
 # figures where it expects them; make4ht copies the pages, the style sheet
 # and the figures they use to doc/html; html-linear.sh then links the pages in
-# reading order.  A TeX error in the last pass fails it.
+# reading order.  A TeX error in the last pass fails it.  It comes after the
+# PDF, whose chunk numbers it takes (gen/*.ext, doc/preamble.tex).
 html: doc/html/avi.html
-doc/html/avi.html: doc/avi.tex doc/preamble.tex doc/indexes.tex $(WOVEN) doc/gen/values.tex $(FIGS:%=figures/%.png) \
+doc/html/avi.html: doc/avi.pdf doc/avi.tex doc/preamble.tex doc/indexes.tex $(WOVEN) doc/gen/values.tex $(FIGS:%=figures/%.png) \
 	     doc/gen/bench.stamp doc/gen/concordance.tex tangle/weave/avi-html.cfg \
 	     tangle/weave/html-linear.sh
 	rm -rf doc/gen/html doc/html && mkdir -p doc/gen/html
