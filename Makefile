@@ -303,7 +303,7 @@ doc/html/avi.html: doc/avi.pdf doc/avi.tex doc/preamble.tex doc/indexes.tex $(WO
 	  && ln -s .. doc/gen/html/gen \
 	  && ln -s ../../../figures doc/gen/html/figures
 	cd doc/gen/html && make4ht -c ../../../tangle/weave/avi-html.cfg -d ../../html \
-	  avi.tex "xhtml,mathml,2" > make4ht.out 2>&1 || { tail -40 make4ht.out; false; }
+	  avi.tex "xhtml,mathml,3" > make4ht.out 2>&1 || { tail -40 make4ht.out; false; }
 	sh tangle/weave/html-linear.sh doc/html
 	@! grep -A3 '^! ' doc/gen/html/avi.log || { echo "doc/html: TeX errors (see doc/gen/html/avi.log)"; false; }
 	@test -s $@ || { echo "doc/html: make4ht wrote no $@"; false; }
