@@ -234,8 +234,9 @@ doc/gen/values.tex: $(FIGS:%=figures/data/%.summary) doc/gen/bench-steps.summary
 	               printf "\\expandafter\\def\\csname valfull:%s:%s\\endcsname{%s}\n", id, $$1, fmt($$2, 6) }' \
 	  $^ > $@
 
-# The concordance of the papers' equations (src/10-intro.nw), from the sources.
-doc/gen/concordance.tex: tangle/weave/concordance.awk $(NW)
+# The concordance of the papers' equations (src/95b-concordance.nw), from the
+# sources and, for the chunks' numbers, the woven index.
+doc/gen/concordance.tex: tangle/weave/concordance.awk doc/gen/woven-ix.tex $(NW)
 	@mkdir -p doc/gen
 	awk -f $^ > $@
 

@@ -167,7 +167,7 @@ figure_fonts() {
 count < <(figure_fonts)
 
 # 9. The identifier index and the chunks' footers list C only
-#    (weave/c-index.awk, src/10-intro.nw): a chunk tangled into a file that
+#    (weave/c-index.awk, src/95b-concordance.nw): a chunk tangled into a file that
 #    is not C or C++ (a shell test, a gnuplot script, the manual page) is no
 #    use of a C identifier and has no "Uses" list, while the C files' chunks do.
 echo "# identifier index"
