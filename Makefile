@@ -37,13 +37,15 @@ all: figures doc html cli
 # --- dependencies ---------------------------------------------------------
 # Debian 12 packages, the compilers included (a minimal Debian has neither cc
 # nor c++): gcc and libc6-dev build everything, g++ the C++ check of the
-# installed headers, groff-base formats the man page in its test.  Installed
+# installed headers, groff-base formats the man page in its test, poppler-utils
+# (pdftotext) and python3 read the built PDFs in make check.  Installed
 # with apt-get as root, with sudo otherwise; a user with neither gets the
 # command to run and exit 2.
 DEB_PKGS := gcc libc6-dev g++ groff-base noweb libgsl-dev gnuplot-nox \
             texlive-latex-base texlive-latex-recommended texlive-fonts-recommended \
             latexmk numdiff libcmocka-dev pkg-config \
-            texlive-plain-generic texlive-extra-utils chromium-headless-shell fonts-lmodern
+            texlive-plain-generic texlive-extra-utils chromium-headless-shell fonts-lmodern \
+            poppler-utils python3
 deps $(B)/.deps:
 	@missing=$$(for p in $(DEB_PKGS); do \
 	    dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' \

@@ -165,6 +165,10 @@ figure_fonts() {
   else echo "not ok - figures lettered in other faces:$bad"; fi
 }
 count < <(figure_fonts)
+#    ... and printed large enough to read: every run of text at 8 points or
+#    more, sub- and superscripts at 0.8 of that (src/96-figkit.nw), measured
+#    in each figure's PDF at the width the book prints it.
+count < <(python3 tangle/weave/figure-lettering.py doc/gen/figure-widths-avi.txt figures/*.pdf)
 
 # 9. The identifier index and the chunks' footers list C only
 #    (weave/c-index.awk, src/95b-concordance.nw): a chunk tangled into a file that
