@@ -383,7 +383,7 @@ BENCH_GP  := $(patsubst %,tangle/bench/%.gp,bench-kepler-wp bench-kepler-long be
              bench-threebody-wp bench-atlas)
 PLOT  = gnuplot -e "datadir='$(REC)'; outdir='figures'" tangle/bench/$(1).gp
 doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-cubic-summary.awk \
-  tangle/bench/gbs-targets.tsv tangle/bench/bench-choose.awk \
+  tangle/bench/gbs-targets.tsv tangle/bench/bench-choose.awk tangle/bench/bench-fails.awk \
   tangle/bench/bench-atlas-summary.awk tangle/bench/bench-logh-summary.awk tangle/bench/bench-logh-table.awk
 	@mkdir -p doc/gen figures
 	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{llrrrrrl}" ; \
@@ -516,6 +516,7 @@ doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-
 	awk -f tangle/bench/bench-choose.awk $(REC)/bench-kepler-wp-needs.tsv \
 	  $(REC)/bench-threebody-wp-needs.tsv $(REC)/bench-cubic-wp-needs.tsv \
 	  $(REC)/bench-targets.tsv > doc/gen/bench-choose.tex
+	awk -f tangle/bench/bench-fails.awk $(REC)/bench-atlas-summary.tsv > doc/gen/bench-fails.tex
 	awk -f tangle/bench/bench-cubic-summary.awk $(REC)/bench-cubic-wp.tsv \
 	  $(REC)/bench-cubic-wp-needs.tsv > doc/gen/bench-cubic-wp.summary
 	awk -f tangle/bench/bench-atlas-summary.awk $(REC)/bench-atlas.tsv \

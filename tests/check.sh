@@ -97,11 +97,14 @@ deps_test() {
 }
 count < <(deps_test)
 
-# 6. The Speed chapter quotes measured numbers only from the recorded bench
-#    run (doc/bench, through \val), and the cost guard's from its pinned
+# 6. Part III's summary and the Speed chapter quote measured numbers only from
+#    the recorded bench run (doc/bench, through \val), and the cost guard's from its pinned
 #    table: each section with the decimal parameters, targets and equation
 #    numbers its text states.
 echo "# numbers in the prose"
+count < <(tests/prose-numbers.sh src/94-references.nw ch:findings)
+count < <(tests/prose-numbers.sh src/94-references.nw sec:bench-choose 0.99)
+count < <(tests/prose-numbers.sh src/94-references.nw sec:bench-fails 0.1)
 count < <(tests/prose-numbers.sh src/95-bench.nw sec:cost-guard \
             0.5 0.01 0.4 0.1 0.05 0.3 4.18)
 count < <(tests/prose-numbers.sh src/95-bench.nw sec:bench-steps \
