@@ -267,7 +267,7 @@ $(WOVEN) &: doc/gen/woven.tex
 # round changes neither .ext, at most four rounds.  The build fails on an
 # undefined reference, a link to nowhere or an overfull box over 10pt in
 # either.
-DOC_DEPS = doc/avi.tex doc/avi-vol2.tex doc/preamble.tex doc/indexes.tex $(WOVEN) \
+DOC_DEPS = doc/avi.tex doc/avi-vol2.tex doc/preamble.tex doc/indexes.tex doc/bibliography.tex $(WOVEN) \
 	   doc/gen/values.tex $(FIGS:%=figures/%.pdf) doc/gen/bench.stamp doc/gen/concordance.tex
 LATEXMK  = latexmk -pdf -interaction=nonstopmode -halt-on-error -outdir=gen -quiet
 doc/avi.pdf doc/avi-vol2.pdf &: $(DOC_DEPS)
@@ -298,11 +298,11 @@ doc/avi.pdf doc/avi-vol2.pdf &: $(DOC_DEPS)
 # reading order.  A TeX error in the last pass fails it.  It comes after the
 # PDF, whose chunk numbers it takes (gen/*.ext, doc/preamble.tex).
 html: doc/html/avi.html
-doc/html/avi.html: doc/avi.pdf doc/avi.tex doc/preamble.tex doc/indexes.tex $(WOVEN) doc/gen/values.tex $(FIGS:%=figures/%.png) \
+doc/html/avi.html: doc/avi.pdf doc/avi.tex doc/preamble.tex doc/indexes.tex doc/bibliography.tex $(WOVEN) doc/gen/values.tex $(FIGS:%=figures/%.png) \
 	     doc/gen/bench.stamp doc/gen/concordance.tex tangle/weave/avi-html.cfg \
 	     tangle/weave/html-linear.sh
 	rm -rf doc/gen/html doc/html && mkdir -p doc/gen/html
-	for f in avi preamble indexes; do ln -s ../../$$f.tex doc/gen/html/$$f.tex; done \
+	for f in avi preamble indexes bibliography; do ln -s ../../$$f.tex doc/gen/html/$$f.tex; done \
 	  && ln -s .. doc/gen/html/gen \
 	  && ln -s ../../../figures doc/gen/html/figures
 	cd doc/gen/html && make4ht -c ../../../tangle/weave/avi-html.cfg -d ../../html \

@@ -147,7 +147,7 @@ count < <(tests/prose-numbers.sh src/86-hierarchical.nw sec:hier-triple \
 echo "# the web edition"
 ix_pages() { echo $(( ($(grep -c "^\\\\nwixlogsorted{$1}" doc/gen/woven-ix.tex) - 1) / 200 )); }
 book_pages=$(( $(grep -cE '^\\(part|chapter|section)\*?\{' doc/gen/woven.tex) \
-               + $(grep -cE '^\\chapter\*\{' doc/indexes.tex) + $(ix_pages c) + $(ix_pages i) + 1 ))
+               + $(cat doc/indexes.tex doc/bibliography.tex | grep -cE '^\\chapter\*\{') + $(ix_pages c) + $(ix_pages i) + 1 ))
 book_values=$(cat doc/gen/woven-1.tex doc/gen/woven-2.tex | grep -o '\\val\(full\)\?{' | wc -l)
 count < <(bash tangle/weave/html-check.sh doc/html "$build/web" "$book_pages" "$book_values")
 
