@@ -16,6 +16,14 @@ SHELL := /bin/bash
 .DELETE_ON_ERROR:
 .SUFFIXES:
 
+# Every core, unless the command line says how many jobs (make -j1 runs one
+# at a time): the targets are independent where make sees them so, and the
+# benchmarks time their runs one after another inside one recipe.
+NPROC := $(shell nproc 2>/dev/null || echo 1)
+ifeq ($(filter -j%,$(MAKEFLAGS)),)
+MAKEFLAGS += -j$(NPROC)
+endif
+
 NW      := $(sort $(wildcard src/*.nw))
 CC      ?= cc
 CFLAGS  := -std=c11 -O2 -g -Wall -Wextra -Wpedantic -Werror -ffp-contract=off \
@@ -65,8 +73,8 @@ deps $(B)/.deps:
 
 # --- tangling ---------------------------------------------------------------
 # Every root chunk (found by noroots, never listed by hand) is tangled to
-# tangle/<root>; .c files with #line directives (-L) so that compiler errors
-# and debuggers point into src/*.nw.  cpif rewrites a file only when its text
+# tangle/<root>, on every core (xargs -P); .c files with #line directives (-L)
+# so that compiler errors and debuggers point into src/*.nw.  cpif rewrites a file only when its text
 # changed, so make rebuilds only what depends on a changed chunk.  (The stale
 # test reads the roots from a here-string: `echo | grep -q` under pipefail can
 # fail when grep exits early and echo gets SIGPIPE.)  The list of
@@ -74,12 +82,11 @@ deps $(B)/.deps:
 # tangling).  Files of roots that no longer exist are removed.
 tangle/files.mk: $(NW) | $(B)/.deps
 	@roots=$$(noroots $(NW) | sed -e 's/^<<//' -e 's/>>$$//'); \
-	for r in $$roots; do \
-	  mkdir -p tangle/$$(dirname $$r); \
-	  case $$r in *.c) L=-L;; *) L=;; esac; \
-	  notangle $$L -R"$$r" $(NW) > tangle/.tmp; \
-	  cpif tangle/$$r < tangle/.tmp; \
-	done; rm -f tangle/.tmp; \
+	printf '%s\n' $$roots | xargs -P $(NPROC) -n 16 sh -c 'for r; do \
+	  mkdir -p "tangle/$${r%/*}"; case $$r in *.c) L=-L;; *) L=;; esac; \
+	  notangle $$L -R"$$r" $(NW) > "tangle/.tmp.$$$$" \
+	    && cpif "tangle/$$r" < "tangle/.tmp.$$$$" || exit 255; \
+	done; rm -f "tangle/.tmp.$$$$"' sh; \
 	for f in $$(cd tangle && find lib ref figkit fig test golden bench examples cli weave -type f 2>/dev/null); do \
 	  grep -qxF "$$f" <<< "$$roots" || { echo "removing stale tangle/$$f"; rm -f tangle/$$f; }; \
 	done; \
@@ -263,18 +270,23 @@ $(WOVEN) &: doc/gen/woven.tex
 
 # Each volume reads what the other's .aux says of its pages, chunks and
 # identifiers (doc/gen/<master>.ext, which holds the other labels as comments
-# so that latexmk sees them change too): they are typeset in turn until a
-# round changes neither .ext, at most four rounds.  The build fails on an
+# so that latexmk sees them change too): in each round both are typeset at
+# once, each with the other's .ext of the round before, until a round changes
+# neither .ext, at most six rounds (a volume whose inputs did not change is
+# not typeset again: latexmk sees that).  The build fails on an
 # undefined reference, a link to nowhere or an overfull box over 10pt in
 # either.
 DOC_DEPS = doc/avi.tex doc/avi-vol2.tex doc/preamble.tex doc/indexes.tex doc/bibliography.tex $(WOVEN) \
 	   doc/gen/values.tex $(FIGS:%=figures/%.pdf) doc/gen/bench.stamp doc/gen/concordance.tex
 LATEXMK  = latexmk -pdf -interaction=nonstopmode -halt-on-error -outdir=gen -quiet
 doc/avi.pdf doc/avi-vol2.pdf &: $(DOC_DEPS)
-	cd doc && touch gen/avi.ext gen/avi-vol2.ext && for round in 1 2 3 4 0; do \
-	  test $$round != 0 || { echo "doc: the two volumes did not settle in four rounds"; exit 1; }; \
+	cd doc && touch gen/avi.ext gen/avi-vol2.ext && for round in 1 2 3 4 5 6 0; do \
+	  test $$round != 0 || { echo "doc: the two volumes did not settle in six rounds"; exit 1; }; \
+	  for v in avi avi-vol2; do ($(LATEXMK) $$v.tex > gen/latexmk-$$v.out 2>&1 \
+	    && echo 0 || echo 1) > gen/latexmk-$$v.rc & done; wait; \
+	  for v in avi avi-vol2; do test "$$(cat gen/latexmk-$$v.rc)" = 0 \
+	    || { tail -40 gen/latexmk-$$v.out; exit 1; }; done; \
 	  changed=; for v in avi avi-vol2; do \
-	    $(LATEXMK) $$v.tex > gen/latexmk-$$v.out 2>&1 || { tail -40 gen/latexmk-$$v.out; exit 1; }; \
 	    sed -n -e 's/^\\newsublabel{/\\avi@xsublabel{/p' -e '/^\\nwixadd{/p' \
 	      -e '/^\\gdef\\avivolone/p' -e 's/^\\newlabel/% &/p' gen/$$v.aux > gen/$$v.ext.new; \
 	    cmp -s gen/$$v.ext.new gen/$$v.ext || changed=1; mv gen/$$v.ext.new gen/$$v.ext; \
@@ -293,23 +305,32 @@ doc/avi.pdf doc/avi-vol2.pdf &: $(DOC_DEPS)
 
 # The web edition (src/98-web.nw): TeX4ht on the same master, run in
 # doc/gen/html where links put the master, its generated inputs and the
-# figures where it expects them; make4ht copies the pages, the style sheet
-# and the figures they use to doc/html; html-linear.sh then links the pages in
-# reading order.  A TeX error in the last pass fails it.  It comes after the
-# PDF, whose chunk numbers it takes (gen/*.ext, doc/preamble.tex).
+# figures where it expects them.  Its first two passes run beside the PDF;
+# the last, which takes the PDF's chunk numbers (gen/*.ext,
+# doc/preamble.tex), waits for it.  make4ht then copies the pages, the style
+# sheet and the figures they use to doc/html; html-linear.sh links the pages
+# in reading order.  A TeX error in the last pass fails it.
+HTML_DEPS = doc/avi.tex doc/preamble.tex doc/indexes.tex doc/bibliography.tex $(WOVEN) \
+	    doc/gen/values.tex $(FIGS:%=figures/%.png) doc/gen/bench.stamp doc/gen/concordance.tex \
+	    tangle/weave/avi-html.cfg tangle/weave/avi-html.mk4
+MAKE4HT = make4ht -e ../../../tangle/weave/avi-html.mk4 -c ../../../tangle/weave/avi-html.cfg
 html: doc/html/avi.html
-doc/html/avi.html: doc/avi.pdf doc/avi.tex doc/preamble.tex doc/indexes.tex doc/bibliography.tex $(WOVEN) doc/gen/values.tex $(FIGS:%=figures/%.png) \
-	     doc/gen/bench.stamp doc/gen/concordance.tex tangle/weave/avi-html.cfg \
-	     tangle/weave/html-linear.sh
-	rm -rf doc/gen/html doc/html && mkdir -p doc/gen/html
+doc/gen/html/prepass.stamp: $(HTML_DEPS)
+	rm -rf doc/gen/html && mkdir -p doc/gen/html
 	for f in avi preamble indexes bibliography; do ln -s ../../$$f.tex doc/gen/html/$$f.tex; done \
 	  && ln -s .. doc/gen/html/gen \
 	  && ln -s ../../../figures doc/gen/html/figures
-	cd doc/gen/html && make4ht -c ../../../tangle/weave/avi-html.cfg -d ../../html \
-	  avi.tex "xhtml,mathml,3" > make4ht.out 2>&1 || { tail -40 make4ht.out; false; }
+	cd doc/gen/html && $(MAKE4HT) -m prepass avi.tex "xhtml,mathml,3" > make4ht-prepass.out 2>&1 \
+	  || { tail -40 make4ht-prepass.out; false; }
+	touch $@
+doc/html/avi.html: doc/gen/html/prepass.stamp doc/avi.pdf tangle/weave/html-linear.sh
+	rm -rf doc/html
+	cd doc/gen/html && $(MAKE4HT) -d ../../html avi.tex "xhtml,mathml,3" > make4ht.out 2>&1 \
+	  || { tail -40 make4ht.out; false; }
 	sh tangle/weave/html-linear.sh doc/html
 	@! grep -A3 '^! ' doc/gen/html/avi.log || { echo "doc/html: TeX errors (see doc/gen/html/avi.log)"; false; }
 	@test -s $@ || { echo "doc/html: make4ht wrote no $@"; false; }
+	touch $@
 
 # --- benchmarks -------------------------------------------------------------
 # make bench: timings, never part of make or make check.  Each table records
