@@ -270,8 +270,9 @@ $(WOVEN) &: doc/gen/woven.tex
 
 # Each volume reads what the other's .aux says of its pages, chunks and
 # identifiers (doc/gen/<master>.ext, which holds the other labels as comments
-# so that latexmk sees them change too): in each round both are typeset at
-# once, each with the other's .ext of the round before, until a round changes
+# so that latexmk sees them change too, and doc/gen/<master>.xr.aux, a copy
+# of its .aux for xr-hyper): in each round both are typeset at once, each with
+# what the other wrote in the round before, until a round changes
 # neither .ext, at most six rounds (a volume whose inputs did not change is
 # not typeset again: latexmk sees that).  The build fails on an
 # undefined reference, a link to nowhere or an overfull box over 10pt in
@@ -290,6 +291,7 @@ doc/avi.pdf doc/avi-vol2.pdf &: $(DOC_DEPS)
 	    sed -n -e 's/^\\newsublabel{/\\avi@xsublabel{/p' -e '/^\\nwixadd{/p' \
 	      -e '/^\\gdef\\avivolone/p' -e 's/^\\newlabel/% &/p' gen/$$v.aux > gen/$$v.ext.new; \
 	    cmp -s gen/$$v.ext.new gen/$$v.ext || changed=1; mv gen/$$v.ext.new gen/$$v.ext; \
+	    cp gen/$$v.aux gen/$$v.xr.aux; \
 	  done; test -n "$$changed" || { echo "doc: both volumes settled in round $$round"; break; }; \
 	done
 	@! grep -E 'LaTeX Warning: (Reference|Citation).*undefined|There were undefined' \
