@@ -118,7 +118,8 @@ FIGS     := $(patsubst tangle/fig/%.gp,%,$(GP))
 FIG_BIN  := $(patsubst tangle/fig/%.c,$(B)/fig/%,$(FIG_C))
 TEST_BIN := $(patsubst tangle/test/%.c,$(B)/test/%,$(TEST_C))
 BENCH_BIN := $(patsubst tangle/bench/%.c,$(B)/bench/%,$(BENCH_C))
-CLI_BIN  := $(patsubst tangle/cli/%.c,$(B)/cli/%,$(CLI_C))
+CLI_O    := $(patsubst tangle/%.c,$(B)/%.o,$(CLI_C))
+CLI_BIN  := $(B)/cli/avi
 
 $(B)/%.o: tangle/%.c | $(B)/.deps
 	@mkdir -p $(@D)
@@ -178,10 +179,12 @@ $(EXAMPLE_BIN): $(B)/examples/%: tangle/examples/%.c $(B)/libavi.a
 	$(CC) $(CFLAGS) $(INC) $(LDFLAGS) $< $(B)/libavi.a $(LDLIBS) -o $@
 all: $(EXAMPLE_BIN)
 
-# the command-line program avi (src/99b-cli.nw)
+# the command-line program avi (src/99b-cli.nw), linked from all files of
+# cli/; its fuzz test links them all but main.c
 cli: $(CLI_BIN)
-$(CLI_BIN): $(B)/cli/%: $(B)/cli/%.o $(B)/libavi.a
+$(CLI_BIN): $(CLI_O) $(B)/libavi.a
 	$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
+$(B)/test/test-cli-fuzz: $(filter-out %/main.o,$(CLI_O))
 
 $(TEST_BIN): $(B)/test/%: $(B)/test/%.o $(B)/libavi.a
 	$(CC) $(CFLAGS) $(LDFLAGS) $(filter %.o %/libavi-ref.a,$^) $(B)/libavi.a -lcmocka $(LDLIBS) -o $@
