@@ -117,7 +117,7 @@ FIGKIT_O := $(patsubst tangle/%.c,$(B)/%.o,$(FIGKIT_C))
 FIGS     := $(patsubst tangle/fig/%.gp,%,$(GP))
 FIG_BIN  := $(patsubst tangle/fig/%.c,$(B)/fig/%,$(FIG_C))
 TEST_BIN := $(patsubst tangle/test/%.c,$(B)/test/%,$(TEST_C))
-BENCH_BIN := $(patsubst tangle/bench/%.c,$(B)/bench/%,$(BENCH_C))
+BENCH_BIN := $(patsubst tangle/bench/%.c,$(B)/bench/%,$(filter-out tangle/bench/kit.c,$(BENCH_C)))
 CLI_O    := $(patsubst tangle/%.c,$(B)/%.o,$(CLI_C))
 CLI_BIN  := $(B)/cli/avi
 
@@ -189,7 +189,8 @@ $(B)/test/test-cli-fuzz: $(filter-out %/main.o,$(CLI_O))
 $(TEST_BIN): $(B)/test/%: $(B)/test/%.o $(B)/libavi.a
 	$(CC) $(CFLAGS) $(LDFLAGS) $(filter %.o %/libavi-ref.a,$^) $(B)/libavi.a -lcmocka $(LDLIBS) -o $@
 
-$(BENCH_BIN): $(B)/bench/%: $(B)/bench/%.o $(B)/libavi.a
+# bench/kit.c is no program: the benchmarks' kit, linked into every one
+$(BENCH_BIN): $(B)/bench/%: $(B)/bench/%.o $(B)/bench/kit.o $(B)/libavi.a
 	$(CC) $(CFLAGS) $(LDFLAGS) $(filter %.o %/libavi-ref.a,$^) $(B)/libavi.a $(LDLIBS) -o $@
 
 -include $(wildcard $(B)/*/*.d $(B)/pic/*/*.d)
