@@ -73,9 +73,10 @@ deps $(B)/.deps:
 
 # --- tangling ---------------------------------------------------------------
 # Every root chunk (found by noroots, never listed by hand) is tangled to
-# tangle/<root>, on every core (xargs -P); .c files with #line directives (-L)
-# so that compiler errors and debuggers point into src/*.nw.  cpif rewrites a file only when its text
-# changed, so make rebuilds only what depends on a changed chunk.  (The stale
+# tangle/<root>, on every core (xargs -P); .c files with #line directives
+# (-L) so that compiler errors and debuggers point into src/*.nw.  cpif
+# rewrites a file only when its text changed, so make rebuilds only what
+# depends on a changed chunk.  (The stale
 # test reads the roots from a here-string: `echo | grep -q` under pipefail can
 # fail when grep exits early and echo gets SIGPIPE.)  The list of
 # roots becomes tangle/files.mk, which make reads back (and re-reads after
