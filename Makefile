@@ -39,7 +39,7 @@ LDFLAGS += -fsanitize=address,undefined
 B       := build-san
 endif
 
-.PHONY: all figures doc html check record deps clean bench install install-doc uninstall memcheck cli
+.PHONY: all figures doc html check record deps clean bench install install-doc uninstall memcheck cli python
 all: figures doc html cli
 
 # --- dependencies ---------------------------------------------------------
@@ -88,7 +88,7 @@ tangle/files.mk: $(NW) | $(B)/.deps
 	  notangle $$L -R"$$r" $(NW) > "tangle/.tmp.$$$$" \
 	    && cpif "tangle/$$r" < "tangle/.tmp.$$$$" || exit 255; \
 	done; rm -f "tangle/.tmp.$$$$"' sh; \
-	for f in $$(cd tangle && find lib ref figkit fig test golden bench examples cli weave -type f 2>/dev/null); do \
+	for f in $$(cd tangle && find lib ref figkit fig test golden bench examples cli weave python -type f 2>/dev/null); do \
 	  grep -qxF "$$f" <<< "$$roots" || { echo "removing stale tangle/$$f"; rm -f tangle/$$f; }; \
 	done; \
 	{ echo "ROOTS := $$(echo $$roots)"; \
@@ -179,6 +179,25 @@ $(EXAMPLE_BIN): $(B)/examples/%: tangle/examples/%.c $(B)/libavi.a
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(INC) $(LDFLAGS) $< $(B)/libavi.a $(LDLIBS) -o $@
 all: $(EXAMPLE_BIN)
+
+# the Python package avi (src/95a-python.nw): its modules and a link to the
+# shared library in build/python/avi, where PYTHONPATH=build/python finds
+# them; python/layout prints C's layout of the structures for its test
+PYTHON  ?= /usr/bin/python3
+PY_SRC  := $(filter tangle/python/avi/%.py,$(ROOTS:%=tangle/%))
+PY_PKG  := $(patsubst tangle/%,$(B)/%,$(PY_SRC)) $(B)/python/avi/libavi.so.0 \
+	   $(B)/python/layout
+python: $(PY_PKG)
+all: python
+$(B)/python/avi/%.py: tangle/python/avi/%.py
+	@mkdir -p $(@D)
+	cp $< $@
+$(B)/python/avi/libavi.so.0: $(B)/libavi.so
+	@mkdir -p $(@D)
+	ln -sf ../../libavi.so $@
+$(B)/python/layout: tangle/python/layout.c tangle/lib/avi.h
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(INC) $< -o $@
 
 # the command-line program avi (src/99b-cli.nw), linked from all files of
 # cli/; its fuzz test links them all but main.c
