@@ -53,7 +53,7 @@ DEB_PKGS := gcc libc6-dev g++ groff-base noweb libgsl-dev gnuplot-nox \
             texlive-latex-base texlive-latex-recommended texlive-fonts-recommended \
             numdiff libcmocka-dev pkg-config \
             texlive-plain-generic texlive-extra-utils chromium-headless-shell fonts-lmodern \
-            poppler-utils python3
+            poppler-utils python3 python3-numpy python3-pytest python3-distributed
 deps $(B)/.deps:
 	@missing=$$(for p in $(DEB_PKGS); do \
 	    dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' \
@@ -277,7 +277,7 @@ doc/gen/concordance.tex: tangle/weave/concordance.awk doc/gen/woven-ix.tex $(NW)
 # (noweave marks each with \nwfilename): Volume II is VOL2_NW, the unit tests
 # and the program; the index data that noweave writes after the last file
 # goes to both (doc/preamble.tex says how the volumes refer to each other).
-VOL2_NW := src/99a-tests.nw src/99b-cli.nw
+VOL2_NW := src/99a-tests.nw src/99b-cli.nw src/99c-python-tests.nw
 WOVEN   := doc/gen/woven-1.tex doc/gen/woven-2.tex doc/gen/woven-ix.tex
 $(WOVEN) &: doc/gen/woven.tex
 	awk -v vol2=' $(VOL2_NW) ' -v v1=doc/gen/woven-1.tex -v v2=doc/gen/woven-2.tex \
@@ -601,11 +601,15 @@ memcheck: $(TEST_BIN) $(FIG_BIN)
 # make install PREFIX=... LIBDIR=... DESTDIR=...: the libraries, the public
 # headers (in include/avi), the pkg-config file, the avi program and its man
 # page, the licence, and the woven PDF's two volumes if they have been built
-# (make install-doc builds and installs them); make uninstall removes exactly these
+# (make install-doc builds and installs them), and the Python package avi in
+# PYDIR with the LIBDIR it loads the library from (_where.py); make uninstall
+# removes exactly these
 # (src/99b-cli.nw).  LIBDIR may be Debian's multiarch path,
 # e.g. LIBDIR=/usr/lib/x86_64-linux-gnu.  Installed as root with no DESTDIR,
 # the shared library is made known to the dynamic linker by $(LDCONFIG).
 PREFIX  ?= /usr/local
+# the Python package: where Debian's python3 looks under PREFIX
+PYDIR   ?= $(PREFIX)/lib/$(shell $(PYTHON) -c 'import sys; print("python%d.%d" % sys.version_info[:2])')/dist-packages
 LIBDIR  ?= $(PREFIX)/lib
 DESTDIR ?=
 LDCONFIG ?= ldconfig
@@ -617,7 +621,7 @@ INSTALLED = $(addprefix $(LIBDIR)/,libavi.a libavi.so libavi.so.0 libavi.so.$(VE
 	    $(addprefix $(PREFIX)/,bin/avi share/man/man1/avi.1 \
 	      $(patsubst tangle/lib/%,include/avi/%,$(PUBLIC_H))) \
 	    $(DOCDIR)/avi.pdf $(DOCDIR)/avi-vol2.pdf $(DOCDIR)/COPYING
-install: $(B)/libavi.a $(B)/libavi.so tangle/lib/avi.pc.in $(CLI_BIN)
+install: $(B)/libavi.a $(B)/libavi.so tangle/lib/avi.pc.in $(CLI_BIN) $(PY_SRC)
 	install -d $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(PREFIX)/include/avi \
 	  $(DESTDIR)$(DOCDIR) $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man1
 	install -m 755 $(B)/cli/avi $(DESTDIR)$(PREFIX)/bin/avi
@@ -632,6 +636,9 @@ install: $(B)/libavi.a $(B)/libavi.so tangle/lib/avi.pc.in $(CLI_BIN)
 	install -m 644 COPYING $(DESTDIR)$(DOCDIR)/COPYING
 	for v in avi avi-vol2; do if [ -f doc/$$v.pdf ]; then \
 	  install -m 644 doc/$$v.pdf $(DESTDIR)$(DOCDIR)/$$v.pdf; fi; done
+	install -d $(DESTDIR)$(PYDIR)/avi
+	install -m 644 $(PY_SRC) $(DESTDIR)$(PYDIR)/avi/
+	echo 'LIBDIR = "$(LIBDIR)"  # written by make install' > $(DESTDIR)$(PYDIR)/avi/_where.py
 	if [ -z "$(DESTDIR)" ] && [ "$$(id -u)" = 0 ]; then $(LDCONFIG); fi
 
 install-doc: doc/avi.pdf doc/avi-vol2.pdf
@@ -640,11 +647,12 @@ install-doc: doc/avi.pdf doc/avi-vol2.pdf
 
 uninstall:
 	rm -f $(addprefix $(DESTDIR),$(INSTALLED))
+	rm -rf $(DESTDIR)$(PYDIR)/avi
 	-rmdir $(DESTDIR)$(PREFIX)/include/avi $(DESTDIR)$(DOCDIR) 2>/dev/null
 
 # --- tests ------------------------------------------------------------------
-check: $(TEST_BIN) $(CLI_BIN) $(EXAMPLE_BIN) $(FIGS:%=figures/data/%.summary) figures doc/html/avi.html
-	@tests/check.sh $(B) $(NW)
+check: $(TEST_BIN) $(CLI_BIN) $(EXAMPLE_BIN) $(PY_PKG) $(FIGS:%=figures/data/%.summary) figures doc/html/avi.html
+	@PYTHON=$(PYTHON) tests/check.sh $(B) $(NW)
 
 record: $(FIGS:%=figures/data/%.summary)
 	tests/golden.sh record

@@ -36,7 +36,7 @@ count() {   # read TAP-like lines on stdin, echo them, count them
 #    the one header of bench/ is kit.h, the benchmarks' kit's.)
 echo "# root chunks"
 odd=$(noroots "$@" | sed -e 's/^<<//' -e 's/>>$//' | grep -Ev \
-  '^(lib/((problems|schemes|time|driver)/)?[a-z0-9-]+\.[ch]|ref/[a-z0-9-]+\.[ch]|lib/avi\.pc\.in|examples/[a-z0-9-]+\.(c|cc|txt)|test/ckpt-sign\.c|cli/([a-z]+\.c|cli\.h|avi\.1)|figkit/[a-z0-9-]+\.[ch]|fig/[a-z0-9-]+\.(c|gp)|test/test-[a-z0-9-]+\.(c|sh)|golden/[a-z0-9-]+\.tol|bench/([a-z0-9-]+\.(c|gp|awk|tsv)|kit\.h)|weave/[a-z0-9-]+\.(awk|cfg|mk4|html|sh|py))$')
+  '^(lib/((problems|schemes|time|driver)/)?[a-z0-9-]+\.[ch]|ref/[a-z0-9-]+\.[ch]|lib/avi\.pc\.in|examples/[a-z0-9-]+\.(c|cc|txt)|test/ckpt-sign\.c|cli/([a-z]+\.c|cli\.h|avi\.1)|figkit/[a-z0-9-]+\.[ch]|fig/[a-z0-9-]+\.(c|gp)|test/test-[a-z0-9-]+\.(c|sh)|golden/[a-z0-9-]+\.tol|bench/([a-z0-9-]+\.(c|gp|awk|tsv)|kit\.h)|weave/[a-z0-9-]+\.(awk|cfg|mk4|html|sh|py)|python/(avi/(_?[a-z]+|__init__)|tests/test_[a-z_]+)\.py|python/layout\.c)$')
 if [ -z "$odd" ]; then
   count <<< "ok - every root chunk names an output file"
 else
@@ -75,6 +75,17 @@ for t in tangle/test/test-*.sh; do
   count < <(bash "$t" "$build/fig/$id" 2>&1 | grep -E '^(ok|not ok) ' \
             | sed "s/^\(ok\|not ok\) [0-9]* - /\1 - /")
 done
+
+# 3b. The Python package (src/95a-python.nw), its tests under pytest
+#     (src/99c-python-tests.nw), against build/python: one line per test.
+echo "# python: pytest"
+count < <(cd "$build/python" && PYTHONPATH=. ${PYTHON:-/usr/bin/python3} -m pytest \
+            -v -p no:cacheprovider -W ignore::DeprecationWarning \
+            ../../tangle/python/tests 2>&1 \
+          | sed -n -e 's/^\(.*::[^ ]*\) PASSED.*/ok - python: \1/p' \
+                   -e 's/^\(.*::[^ ]*\) \(FAILED\|ERROR\).*/not ok - python: \1/p' \
+                   -e 's/^ERROR \(.*\)/not ok - python: \1/p' \
+                   -e 's/^\(.*::[^ ]*\) SKIPPED.*/ok - python: \1 # SKIP/p')
 
 # 4. Golden files: the figure data against tests/golden, by numdiff.
 echo "# golden files"
