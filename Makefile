@@ -237,13 +237,13 @@ figures/hl-fig5.pdf figures/hl-fig5.png: figures/data/hl-fig5c.summary
 # the hand-written masters of its two volumes, doc/preamble.tex their preamble.
 doc: doc/avi.pdf doc/avi-vol2.pdf
 
-doc/gen/woven.tex: $(NW) tangle/weave/c-index.awk | $(B)/.deps
+doc/gen/woven.tex: $(NW) tangle/weave/c-index.awk tangle/weave/escape-names.awk | $(B)/.deps
 	@mkdir -p doc/gen
 	noweave -n -filter 'awk -v kind=defn -f tangle/weave/c-index.awk' -index \
 	  -filter 'awk -v kind=use -f tangle/weave/c-index.awk' $(NW) \
 	  > doc/gen/.tmp 2> doc/gen/.err || { cat doc/gen/.err; false; }
 	@! test -s doc/gen/.err || { cat doc/gen/.err; echo "noweave: a stage failed"; false; }
-	cpif $@ < doc/gen/.tmp && rm -f doc/gen/.tmp
+	awk -f tangle/weave/escape-names.awk doc/gen/.tmp | cpif $@ && rm -f doc/gen/.tmp
 
 # Numbers quoted in the text come from the figures' summaries: each line
 # "key value" of figures/data/<id>.summary becomes \val{<id>}{key} (three
