@@ -6,7 +6,8 @@
 #   make check    unit tests, golden files, chunk check, the web edition in a
 #                 browser; ends "N passed, N failed"
 #   make record   re-record the golden files from figures/data (commit separately)
-#   make deps     install the Debian packages the build needs (run by make)
+#   make deps     install the Debian packages that make and make check need
+#                 (make installs its own, make check the rest)
 #   make clean    remove everything generated
 #
 # Only src/*.nw is hand-written C, headers and gnuplot; tangle/ is generated.
@@ -44,18 +45,29 @@ all: figures doc html cli
 
 # --- dependencies ---------------------------------------------------------
 # Debian 12 packages, the compilers included (a minimal Debian has neither cc
-# nor c++): gcc and libc6-dev build everything, g++ the C++ check of the
-# installed headers, groff-base formats the man page in its test, poppler-utils
-# (pdftotext) and python3 read the built PDFs in make check.  Installed
+# nor c++), in two lists.  DEB_PKGS is what make itself uses: gcc and
+# libc6-dev build the library, the programs and the figures' data, gnuplot
+# (with fonts-lmodern for its lettering) draws the figures, noweb and TeX
+# Live tangle and weave the book and typeset both volumes, TeX4ht
+# (texlive-plain-generic, make4ht in texlive-extra-utils) its web edition.
+# DEB_CHECK_PKGS is what only make check uses, installed when make check
+# first runs: libcmocka-dev for the unit tests (no test is built by make),
+# numdiff for the golden files, g++ and pkg-config for the check of the
+# installed library and headers, groff-base for the man page's test,
+# chromium-headless-shell to read the web edition, poppler-utils (pdftotext)
+# and python3 to read the built PDFs, pytest and Dask (python3-pytest,
+# python3-distributed) for the Python package's tests.  python3-numpy is
+# make's: the Python package that make builds imports it.  make deps
+# installs both.  Installed
 # with apt-get as root, with sudo otherwise; a user with neither gets the
 # command to run and exit 2.
-DEB_PKGS := gcc libc6-dev g++ groff-base noweb libgsl-dev gnuplot-nox \
+DEB_PKGS := gcc libc6-dev noweb libgsl-dev gnuplot-nox fonts-lmodern \
             texlive-latex-base texlive-latex-recommended texlive-fonts-recommended \
-            numdiff libcmocka-dev pkg-config \
-            texlive-plain-generic texlive-extra-utils chromium-headless-shell fonts-lmodern \
-            poppler-utils python3 python3-numpy python3-pytest python3-distributed
-deps $(B)/.deps:
-	@missing=$$(for p in $(DEB_PKGS); do \
+            texlive-plain-generic texlive-extra-utils python3-numpy
+DEB_CHECK_PKGS := libcmocka-dev numdiff g++ pkg-config groff-base \
+            chromium-headless-shell poppler-utils python3 python3-pytest python3-distributed
+# $(call APT_INSTALL,packages): install those of the packages that are missing.
+APT_INSTALL = missing=$$(for p in $(1); do \
 	    dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' \
 	    || echo $$p; done); \
 	if [ -n "$$missing" ]; then \
@@ -69,7 +81,15 @@ deps $(B)/.deps:
 	  DEBIAN_FRONTEND=noninteractive $$sudo apt-get install -y -q \
 	    --no-install-recommends $$missing; \
 	fi
-	@mkdir -p $(B) && touch $(B)/.deps
+$(B)/.deps:
+	@$(call APT_INSTALL,$(DEB_PKGS))
+	@mkdir -p $(B) && touch $@
+$(B)/.deps-check: | $(B)/.deps
+	@$(call APT_INSTALL,$(DEB_CHECK_PKGS))
+	@mkdir -p $(B) && touch $@
+deps:
+	@$(call APT_INSTALL,$(DEB_PKGS) $(DEB_CHECK_PKGS))
+	@mkdir -p $(B) && touch $(B)/.deps $(B)/.deps-check
 
 # --- tangling ---------------------------------------------------------------
 # Every root chunk (found by noroots, never listed by hand) is tangled to
@@ -206,6 +226,8 @@ $(CLI_BIN): $(CLI_O) $(B)/libavi.a
 	$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
 $(B)/test/test-cli-fuzz: $(filter-out %/main.o,$(CLI_O))
 
+# the unit tests, built by make check only, need cmocka (DEB_CHECK_PKGS)
+$(TEST_BIN:%=%.o): | $(B)/.deps-check
 $(TEST_BIN): $(B)/test/%: $(B)/test/%.o $(B)/libavi.a
 	$(CC) $(CFLAGS) $(LDFLAGS) $(filter %.o %/libavi-ref.a,$^) $(B)/libavi.a -lcmocka $(LDLIBS) -o $@
 
@@ -651,7 +673,8 @@ uninstall:
 	-rmdir $(DESTDIR)$(PREFIX)/include/avi $(DESTDIR)$(DOCDIR) 2>/dev/null
 
 # --- tests ------------------------------------------------------------------
-check: $(TEST_BIN) $(CLI_BIN) $(EXAMPLE_BIN) $(PY_PKG) $(FIGS:%=figures/data/%.summary) figures doc/html/avi.html
+check: $(TEST_BIN) $(CLI_BIN) $(EXAMPLE_BIN) $(PY_PKG) $(FIGS:%=figures/data/%.summary) figures doc/html/avi.html \
+  | $(B)/.deps-check
 	@PYTHON=$(PYTHON) tests/check.sh $(B) $(NW)
 
 record: $(FIGS:%=figures/data/%.summary)

@@ -5,9 +5,9 @@
 #
 # A check that could not run says so in TAP's way, "ok - what # SKIP why",
 # and is counted as skipped, never as passed.  Under CI (CI set and not
-# "false"), where `make` has installed everything the tests use, a skip is
-# a failure unless its reason says why CI may skip it, with the words
-# "ci-ok:" and the justification.
+# "false"), where `make` and `make check` have installed everything the
+# tests use, a skip is a failure unless its reason says why CI may skip
+# it, with the words "ci-ok:" and the justification.
 set -u
 cd "$(dirname "$0")/.."
 build=$1; shift
@@ -92,22 +92,24 @@ echo "# golden files"
 count < <(tests/golden.sh compare)
 
 # 5. The build itself: a user who is neither root nor has sudo, missing a
-#    package, gets the apt-get command to run and exit 2.  The user is
+#    package, gets the apt-get command to run and exit 2, from make deps
+#    and from the stamp of make check's own packages alike.  The user is
 #    played by a PATH with no sudo on it and an `id` that answers 1000.
 echo "# the build"
-deps_test() {
-  local tmp rc out
+deps_test() {   # deps_test TARGET WHAT MAKE-VARIABLES...
+  local tmp rc out target=$1 what=$2; shift 2
   tmp=$(mktemp -d) && mkdir "$tmp/b" "$tmp/bin" || return 1
   for c in dpkg-query grep mkdir touch bash; do ln -s "$(command -v "$c")" "$tmp/bin/$c"; done
   printf '#!/bin/sh\necho 1000\n' > "$tmp/bin/id" && chmod +x "$tmp/bin/id"
-  out=$(env PATH="$tmp/bin" "$(command -v make)" -s --no-print-directory deps \
-        B="$tmp/b" DEB_PKGS="avi-no-such-package" 2>&1); rc=$?
+  out=$(env PATH="$tmp/bin" "$(command -v make)" -s --no-print-directory "${target//@/$tmp}" \
+        B="$tmp/b" "$@" 2>&1); rc=$?
   rm -rf "$tmp"
   if [ $rc = 2 ] && grep -q "^make: missing Debian packages; as root, run: apt-get install .*avi-no-such-package" <<< "$out"
-  then echo "ok - without root or sudo, make names the apt-get command and exits 2"
-  else echo "not ok - without root or sudo, make exits $rc: $out"; fi
+  then echo "ok - without root or sudo, $what names the apt-get command and exits 2"
+  else echo "not ok - without root or sudo, $what exits $rc: $out"; fi
 }
-count < <(deps_test)
+count < <(deps_test deps "make" DEB_PKGS="avi-no-such-package")
+count < <(deps_test @/b/.deps-check "make check" DEB_PKGS= DEB_CHECK_PKGS="avi-no-such-package")
 
 # 6. Part III's summary and the Speed chapter quote measured numbers only from
 #    the recorded bench run (doc/bench, through \val), and the cost guard's from its pinned
