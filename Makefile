@@ -40,7 +40,7 @@ LDFLAGS += -fsanitize=address,undefined
 B       := build-san
 endif
 
-.PHONY: all figures doc html check record deps clean bench install install-doc uninstall memcheck cli python
+.PHONY: all figures doc html check record deps clean bench bench-python install install-doc uninstall memcheck cli python
 all: figures doc html cli
 
 # --- dependencies ---------------------------------------------------------
@@ -275,7 +275,8 @@ doc/gen/values.tex: $(FIGS:%=figures/data/%.summary) doc/gen/bench-steps.summary
 	  doc/gen/bench-kepler-wp.summary doc/gen/bench-threebody-wp.summary \
 	  doc/gen/bench-kepler-long.summary doc/gen/bench-pendulum.summary \
 	  doc/gen/bench-cubic-wp.summary doc/gen/bench-atlas.summary doc/gen/bench-pairs.summary \
-	  doc/gen/bench-targets.summary doc/gen/bench-logh.summary doc/gen/cost-guard.summary
+	  doc/gen/bench-targets.summary doc/gen/bench-logh.summary doc/gen/cost-guard.summary \
+  doc/gen/python-speed.summary doc/gen/burrau-ensemble.summary
 	@mkdir -p doc/gen
 	awk 'function fmt(v, d,  s, m, e) { \
 	       if (v == int(v) && v < 1e15 && v > -1e15) return sprintf("%d", v); \
@@ -409,7 +410,7 @@ CHEAPEST_TABLE = awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabula
 	  END { for (i = 1; i <= n; i++) print row[order[i]] "\\\\"; \
 	    print "\\end{tabular}\\\\[1ex] cheapest run of the sweep; " cpu "; " cc "\\end{center}" }' \
 	  $(1) > $(2)
-bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-long.gp tangle/bench/bench-cubic-wp.gp \
+bench: $(BENCH_BIN) $(PY_PKG) tangle/bench/burrau_ensemble.py tangle/bench/python_speed.py tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-long.gp tangle/bench/bench-cubic-wp.gp \
 	  tangle/bench/bench-threebody-wp.gp tangle/bench/bench-atlas.gp
 	@mkdir -p figures/data doc/gen
 	cut -d' ' -f1-3 /proc/loadavg > figures/data/load-start.txt
@@ -437,6 +438,7 @@ bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-lo
 	{ $(MACHINE); $(B)/bench/bench-logh; } | tee figures/data/bench-logh.tsv
 	$(B)/bench/bench-targets figures/data/targets.tmp
 	$(call STAMP,figures/data/targets.tmp,figures/data/bench-targets.tsv,show)
+	$(PY_BENCH)
 	@mkdir -p $(REC)
 	cp $(BENCH_TSV:%=figures/data/%.tsv) $(REC)/
 	{ $(MACHINE); echo "# date: $$(date -u '+%F %T UTC')"; \
@@ -445,6 +447,17 @@ bench: $(BENCH_BIN) tangle/bench/bench-kepler-wp.gp tangle/bench/bench-kepler-lo
 	  } > $(REC)/machine.txt
 	rm -f doc/avi.pdf doc/avi-vol2.pdf && $(MAKE) --no-print-directory doc
 
+# The Python package's two benchmarks (src/95a-python.nw), also alone:
+# make bench-python runs them and records them, and only them, in $(REC).
+PY_BENCH = { $(MACHINE); cd $(B)/python && PYTHONPATH=.:../../tangle/bench $(PYTHON) \
+	  ../../tangle/bench/burrau_ensemble.py; } > figures/data/burrau-ensemble.tsv; \
+	{ $(MACHINE); cd $(B)/python && PYTHONPATH=.:../../tangle/bench $(PYTHON) \
+	  ../../tangle/bench/python_speed.py; } | tee figures/data/python-speed.tsv
+bench-python: $(PY_PKG) tangle/bench/burrau_ensemble.py tangle/bench/python_speed.py
+	@mkdir -p figures/data $(REC)
+	$(PY_BENCH)
+	cp figures/data/burrau-ensemble.tsv figures/data/python-speed.tsv $(REC)/
+
 # The record of the last make bench, committed: a plain make typesets its
 # tables and draws its charts from it (doc/gen/bench.stamp), and the text
 # quotes it through \val{bench-steps}{...} (doc/gen/bench-steps.summary).
@@ -452,9 +465,10 @@ REC       := doc/bench
 BENCH_TSV := bench-steps bench-steps-loaded bench-kepler-wp bench-kepler-wp-needs \
              bench-kepler-long bench-kepler-long-costs bench-cubic-wp bench-cubic-wp-needs \
              bench-threebody-wp bench-threebody-wp-reference bench-threebody-wp-needs \
-             bench-atlas bench-atlas-summary bench-pendulum bench-targets bench-pairs bench-logh
+             bench-atlas bench-atlas-summary bench-pendulum bench-targets bench-pairs bench-logh \
+             burrau-ensemble python-speed
 BENCH_GP  := $(patsubst %,tangle/bench/%.gp,bench-kepler-wp bench-kepler-long bench-cubic-wp \
-             bench-threebody-wp bench-atlas)
+             bench-threebody-wp bench-atlas burrau-ensemble)
 PLOT  = gnuplot -e "datadir='$(REC)'; outdir='figures'" tangle/bench/$(1).gp
 doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-cubic-summary.awk \
   tangle/bench/gbs-targets.tsv tangle/bench/bench-choose.awk tangle/bench/bench-fails.awk \
@@ -468,6 +482,13 @@ doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-
 	  END { print "\\end{tabular}\\\\[1ex] per-thread processor time, 7 repetitions of $$10^6$$ steps, ratios to Verlet within each repetition (median, min--max); loaded: the median ratio with two spinning threads; " cpu "; " cc "\\end{center}" }' \
 	  $(REC)/bench-steps-loaded.tsv $(REC)/bench-steps.tsv > doc/gen/bench-steps.tex
 	$(call PLOT,bench-kepler-wp)
+	$(call PLOT,burrau-ensemble)
+	awk -F'\t' '!/^#/ { print $$1 "_min", $$2; print $$1 "_median", $$3 }' \
+	  $(REC)/python-speed.tsv > doc/gen/python-speed.summary
+	awk -F'\t' '!/^#/ { n++; ok += $$8 == "ok"; if ($$14 == 1) { c++; e[$$9]++ } } \
+	  END { print "runs", n; print "ok", ok; print "converged", c; \
+	        for (k = 0; k <= 3; k++) print "escaper_" k, e[k] + 0 }' \
+	  $(REC)/burrau-ensemble.tsv > doc/gen/burrau-ensemble.summary
 	awk -F'\t' '/^# cpu/ { cpu = substr($$0, 8) } /^# compiler/ { cc = substr($$0, 13) } /^#/ { next } \
 	  { if (!($$1 in seen)) { seen[$$1] = 1; tg[++nt] = $$1 } \
 	    if (!($$2 in row)) { order[++n] = $$2; row[$$2] = $$2 } \
@@ -601,7 +622,8 @@ doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-
 doc/gen/bench-steps.summary doc/gen/bench-kepler-wp.summary doc/gen/bench-threebody-wp.summary \
   doc/gen/bench-kepler-long.summary doc/gen/bench-pendulum.summary \
   doc/gen/bench-cubic-wp.summary doc/gen/bench-atlas.summary \
-  doc/gen/bench-pairs.summary doc/gen/bench-targets.summary doc/gen/bench-logh.summary: doc/gen/bench.stamp
+  doc/gen/bench-pairs.summary doc/gen/bench-targets.summary doc/gen/bench-logh.summary \
+  doc/gen/python-speed.summary doc/gen/burrau-ensemble.summary: doc/gen/bench.stamp
 
 # --- memcheck ---------------------------------------------------------------
 # make memcheck: every unit test and every figure program (with its defaults,

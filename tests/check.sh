@@ -36,7 +36,7 @@ count() {   # read TAP-like lines on stdin, echo them, count them
 #    the one header of bench/ is kit.h, the benchmarks' kit's.)
 echo "# root chunks"
 odd=$(noroots "$@" | sed -e 's/^<<//' -e 's/>>$//' | grep -Ev \
-  '^(lib/((problems|schemes|time|driver)/)?[a-z0-9-]+\.[ch]|ref/[a-z0-9-]+\.[ch]|lib/avi\.pc\.in|examples/[a-z0-9-]+\.(c|cc|txt)|test/ckpt-sign\.c|cli/([a-z]+\.c|cli\.h|avi\.1)|figkit/[a-z0-9-]+\.[ch]|fig/[a-z0-9-]+\.(c|gp)|test/test-[a-z0-9-]+\.(c|sh)|golden/[a-z0-9-]+\.tol|bench/([a-z0-9-]+\.(c|gp|awk|tsv)|kit\.h)|weave/[a-z0-9-]+\.(awk|cfg|mk4|html|sh|py)|python/(avi/(_?[a-z]+|__init__)|tests/test_[a-z_]+)\.py|python/layout\.c)$')
+  '^(lib/((problems|schemes|time|driver)/)?[a-z0-9-]+\.[ch]|ref/[a-z0-9-]+\.[ch]|lib/avi\.pc\.in|examples/[a-z0-9-]+\.(c|cc|txt)|test/ckpt-sign\.c|cli/([a-z]+\.c|cli\.h|avi\.1)|figkit/[a-z0-9-]+\.[ch]|fig/[a-z0-9-]+\.(c|gp)|test/test-[a-z0-9-]+\.(c|sh)|golden/[a-z0-9-]+\.tol|bench/([a-z0-9-]+\.(c|gp|awk|tsv)|[a-z_]+\.py|kit\.h)|weave/[a-z0-9-]+\.(awk|cfg|mk4|html|sh|py)|python/(avi/(_?[a-z]+|__init__)|tests/test_[a-z_]+)\.py|python/layout\.c)$')
 if [ -z "$odd" ]; then
   count <<< "ok - every root chunk names an output file"
 else
@@ -83,14 +83,21 @@ done
 #     own allocations, freed at exit or never, are not the library's leaks.
 echo "# python: pytest"
 san=; case $build in *-san) san="$(${CC:-cc} -print-file-name=libasan.so) $(${CC:-cc} -print-file-name=libubsan.so)";; esac
-count < <(cd "$build/python" && LD_PRELOAD=$san ASAN_OPTIONS=detect_leaks=0 \
-            PYTHONPATH=. ${PYTHON:-/usr/bin/python3} -m pytest \
-            -v -p no:cacheprovider -W ignore::DeprecationWarning \
-            ../../tangle/python/tests 2>&1 \
-          | sed -n -e 's/^\(.*::[^ ]*\) PASSED.*/ok - python: \1/p' \
-                   -e 's/^\(.*::[^ ]*\) \(FAILED\|ERROR\).*/not ok - python: \1/p' \
-                   -e 's/^ERROR \(.*\)/not ok - python: \1/p' \
-                   -e 's/^\(.*::[^ ]*\) SKIPPED.*/ok - python: \1 # SKIP/p')
+out=$(cd "$build/python" && LD_PRELOAD=$san ASAN_OPTIONS=detect_leaks=0 \
+      PYTHONPATH=. ${PYTHON:-/usr/bin/python3} -m pytest -v -p no:cacheprovider \
+      -W ignore::DeprecationWarning ../../tangle/python/tests 2>&1); rc=$?
+tap=$(sed -n -e 's/^\(.*::.*\) PASSED.*/ok - python: \1/p' \
+             -e 's/^\(.*::.*\) \(FAILED\|ERROR\).*/not ok - python: \1/p' \
+             -e 's/^ERROR \(.*\)/not ok - python: \1/p' \
+             -e 's/^\(.*::.*\) SKIPPED.*/ok - python: \1 # SKIP/p' <<< "$out")
+count <<< "$tap"
+#     pytest's own count must be the lines read, and its status clean
+said=$(tail -1 <<< "$out" | grep -oE '[0-9]+ (passed|failed|skipped|error)' | awk '{ n += $1 } END { print n + 0 }')
+if [ "$rc" = 0 ] && [ "$said" = "$(grep -c . <<< "$tap")" ]; then
+  count <<< "ok - python: pytest ran $said tests, each read above"
+else
+  count <<< "not ok - python: pytest exit $rc, $said tests, $(grep -c . <<< "$tap") read: $(tail -3 <<< "$out")"
+fi
 
 # 4. Golden files: the figure data against tests/golden, by numdiff.
 echo "# golden files"
