@@ -449,10 +449,10 @@ bench: $(BENCH_BIN) $(PY_PKG) tangle/bench/burrau_ensemble.py tangle/bench/pytho
 
 # The Python package's two benchmarks (src/95a-python.nw), also alone:
 # make bench-python runs them and records them, and only them, in $(REC).
-PY_BENCH = { $(MACHINE); cd $(B)/python && PYTHONPATH=.:../../tangle/bench $(PYTHON) \
-	  ../../tangle/bench/burrau_ensemble.py; } > figures/data/burrau-ensemble.tsv; \
-	{ $(MACHINE); cd $(B)/python && PYTHONPATH=.:../../tangle/bench $(PYTHON) \
-	  ../../tangle/bench/python_speed.py; } | tee figures/data/python-speed.tsv
+PY_BENCH = ( $(MACHINE); cd $(B)/python && PYTHONPATH=.:../../tangle/bench $(PYTHON) \
+	  ../../tangle/bench/burrau_ensemble.py ) > figures/data/burrau-ensemble.tsv; \
+	( $(MACHINE); cd $(B)/python && PYTHONPATH=.:../../tangle/bench $(PYTHON) \
+	  ../../tangle/bench/python_speed.py ) | tee figures/data/python-speed.tsv
 bench-python: $(PY_PKG) tangle/bench/burrau_ensemble.py tangle/bench/python_speed.py
 	@mkdir -p figures/data $(REC)
 	$(PY_BENCH)
@@ -486,7 +486,7 @@ doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-
 	awk -F'\t' '!/^#/ { print $$1 "_min", $$2; print $$1 "_median", $$3 }' \
 	  $(REC)/python-speed.tsv > doc/gen/python-speed.summary
 	awk -F'\t' '!/^#/ { n++; ok += $$8 == "ok"; if ($$14 == 1) { c++; e[$$9]++ } } \
-	  END { print "runs", n; print "ok", ok; print "converged", c; \
+	  END { print "runs", n; print "ok", ok; print "failed", n - ok; print "converged", c; \
 	        for (k = 0; k <= 3; k++) print "escaper_" k, e[k] + 0 }' \
 	  $(REC)/burrau-ensemble.tsv > doc/gen/burrau-ensemble.summary
 	awk -F'\t' '/^# cpu/ { cpu = substr($$0, 8) } /^# compiler/ { cc = substr($$0, 13) } /^#/ { next } \
