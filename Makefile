@@ -359,31 +359,35 @@ doc/avi.pdf doc/avi-vol2.pdf &: $(DOC_DEPS)
 
 # The web edition (src/98-web.nw): TeX4ht on the same master, run in
 # doc/gen/html where links put the master, its generated inputs and the
-# figures where it expects them.  Its first two passes run beside the PDF;
-# the last, which takes the PDF's chunk numbers (gen/*.ext,
-# doc/preamble.tex), waits for it.  make4ht then copies the pages, the style
-# sheet and the figures they use to doc/html; html-linear.sh links the pages
-# in reading order.  A TeX error in the last pass fails it.
+# figures where it expects them.  Its three passes and the conversion wait
+# for nothing of the PDF and run beside its typesetting: every chunk number
+# in the pages is a mark with the chunk's label (doc/preamble.tex), and
+# make4ht copies the pages, the style sheet and the figures they use to
+# doc/gen/html/pages.  Only the last step waits for the PDF: a copy of
+# those pages becomes doc/html, html-chunks.awk writes the PDF's chunk
+# numbers (gen/*.ext) into it, and html-linear.sh links the pages in
+# reading order.  A TeX error in the last pass fails the build.
 HTML_DEPS = doc/avi.tex doc/preamble.tex doc/indexes.tex doc/bibliography.tex $(WOVEN) \
 	    doc/gen/values.tex $(FIGS:%=figures/%.png) doc/gen/bench.stamp doc/gen/concordance.tex \
 	    tangle/weave/avi-html.cfg tangle/weave/avi-html.mk4
 MAKE4HT = make4ht -e ../../../tangle/weave/avi-html.mk4 -c ../../../tangle/weave/avi-html.cfg
 html: doc/html/avi.html
-doc/gen/html/prepass.stamp: $(HTML_DEPS)
+doc/gen/html/pages.stamp: $(HTML_DEPS)
 	rm -rf doc/gen/html && mkdir -p doc/gen/html
 	for f in avi preamble indexes bibliography; do ln -s ../../$$f.tex doc/gen/html/$$f.tex; done \
 	  && ln -s .. doc/gen/html/gen \
 	  && ln -s ../../../figures doc/gen/html/figures
-	cd doc/gen/html && $(MAKE4HT) -m prepass avi.tex "xhtml,mathml,3" > make4ht-prepass.out 2>&1 \
-	  || { tail -40 make4ht-prepass.out; false; }
-	touch $@
-doc/html/avi.html: doc/gen/html/prepass.stamp doc/avi.pdf tangle/weave/html-linear.sh
-	rm -rf doc/html
-	cd doc/gen/html && $(MAKE4HT) -d ../../html avi.tex "xhtml,mathml,3" > make4ht.out 2>&1 \
+	cd doc/gen/html && $(MAKE4HT) -d pages avi.tex "xhtml,mathml,3" > make4ht.out 2>&1 \
 	  || { tail -40 make4ht.out; false; }
-	sh tangle/weave/html-linear.sh doc/html
 	@! grep -A3 '^! ' doc/gen/html/avi.log || { echo "doc/html: TeX errors (see doc/gen/html/avi.log)"; false; }
-	@test -s $@ || { echo "doc/html: make4ht wrote no $@"; false; }
+	@test -s doc/gen/html/pages/avi.html || { echo "doc/html: make4ht wrote no avi.html"; false; }
+	touch $@
+doc/html/avi.html: doc/gen/html/pages.stamp doc/avi.pdf tangle/weave/html-chunks.awk tangle/weave/html-linear.sh
+	rm -rf doc/html && cp -R doc/gen/html/pages doc/html
+	awk -f tangle/weave/html-chunks.awk doc/gen/avi.ext doc/gen/avi-vol2.ext doc/html/*.html
+	for f in doc/html/*.html; do mv "$$f.tmp" "$$f"; done
+	@! grep -l "class='avi-chunk" doc/html/*.html || { echo "doc/html: chunk marks left in these pages"; false; }
+	sh tangle/weave/html-linear.sh doc/html
 	touch $@
 
 # --- benchmarks -------------------------------------------------------------
