@@ -55,17 +55,17 @@ all: figures doc html cli
 # numdiff for the golden files, g++ and pkg-config for the check of the
 # installed library and headers, groff-base for the man page's test,
 # chromium-headless-shell to read the web edition, poppler-utils (pdftotext)
-# and python3 to read the built PDFs, pytest and Dask (python3-pytest,
-# python3-distributed) for the Python package's tests.  python3-numpy is
-# make's: the Python package that make builds imports it.  make deps
-# installs both.  Installed
+# and python3 to read the built PDFs, python3-pytest for the Python
+# package's tests.  python3-numpy and python3-distributed are make's: the
+# Python package that make builds imports NumPy, and its ensembles run on
+# Dask.  make deps installs both lists.  Installed
 # with apt-get as root, with sudo otherwise; a user with neither gets the
 # command to run and exit 2.
 DEB_PKGS := gcc libc6-dev noweb libgsl-dev gnuplot-nox fonts-lmodern \
             texlive-latex-base texlive-latex-recommended texlive-fonts-recommended \
-            texlive-plain-generic texlive-extra-utils python3-numpy
+            texlive-plain-generic texlive-extra-utils python3-numpy python3-distributed
 DEB_CHECK_PKGS := libcmocka-dev numdiff g++ pkg-config groff-base \
-            chromium-headless-shell poppler-utils python3 python3-pytest python3-distributed
+            chromium-headless-shell poppler-utils python3 python3-pytest
 # $(call APT_INSTALL,packages): install those of the packages that are missing.
 APT_INSTALL = missing=$$(for p in $(1); do \
 	    dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' \
