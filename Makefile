@@ -317,15 +317,22 @@ $(WOVEN) &: doc/gen/woven.tex
 
 # Each volume reads what the other's .aux says of its pages, chunks and
 # identifiers (doc/gen/<master>.ext, and doc/gen/<master>.xr.aux, a copy of
-# its .aux for xr-hyper).  The two are typeset as one fixed point: in each
-# round both volumes get one pdflatex pass at once, each reading its own
-# .aux, .toc and .out and the other's .ext of the round before, and the
-# rounds stop at the first that changes none of these files (at most ten).
-# Not latexmk, which settles one file at a time: run per volume inside the
-# rounds, it ended each with a pass that only confirmed what the next round
-# typeset again (five rounds, about ten passes a volume, against five
-# passes here).  The build fails on an undefined reference, a link to
-# nowhere or an overfull box over 10pt in either.
+# its .aux for xr-hyper).  The two are typeset as one fixed point, in
+# rounds: in each round Volume I gets one pdflatex pass, reading its own
+# .aux, .toc and .out and Volume II's .ext of the round before, and then
+# Volume II one pass, reading its own files and the .ext Volume I has just
+# written, where Volume I says on which page it ends and so where Volume II
+# starts.  The rounds stop at the first that changes none of these files
+# (at most ten).  Typeset one after the other, the volumes settle in three
+# rounds from a clean doc/gen: side by side, each reading the other's
+# files of the round before, Volume II learned Volume I's length a round
+# late and its page numbers (on which Volume I's references to it depend)
+# a round after that: five rounds, ten passes against six, whose CPU time
+# the web edition, typeset beside them, was waiting for.  Not latexmk,
+# which settles one file at a time: run per volume inside the rounds, it
+# ended each with a pass that only confirmed what the next round typeset
+# again.  The build fails on an undefined reference, a link to nowhere or
+# an overfull box over 10pt in either.
 DOC_DEPS = doc/avi.tex doc/avi-vol2.tex doc/preamble.tex doc/indexes.tex doc/bibliography.tex $(WOVEN) \
 	   doc/gen/values.tex $(FIGS:%=figures/%.pdf) doc/gen/bench.stamp doc/gen/concordance.tex
 PDFLATEX = pdflatex -interaction=nonstopmode -halt-on-error -output-directory=gen
@@ -335,11 +342,8 @@ doc/avi.pdf doc/avi-vol2.pdf &: $(DOC_DEPS)
 	cd doc && touch gen/avi.ext gen/avi-vol2.ext && for round in 1 2 3 4 5 6 7 8 9 10 0; do \
 	  test $$round != 0 || { echo "doc: the two volumes did not settle in ten rounds"; exit 1; }; \
 	  before=$$(cat $(DOC_STATE) 2> /dev/null | md5sum || :); \
-	  for v in avi avi-vol2; do ($(PDFLATEX) $$v.tex > gen/pdflatex-$$v.out 2>&1 \
-	    && echo 0 || echo 1) > gen/pdflatex-$$v.rc & done; wait; \
-	  for v in avi avi-vol2; do test "$$(cat gen/pdflatex-$$v.rc)" = 0 \
-	    || { tail -40 gen/pdflatex-$$v.out; exit 1; }; done; \
 	  for v in avi avi-vol2; do \
+	    $(PDFLATEX) $$v.tex > gen/pdflatex-$$v.out 2>&1 || { tail -40 gen/pdflatex-$$v.out; exit 1; }; \
 	    sed -n -e 's/^\\newsublabel{/\\avi@xsublabel{/p' -e '/^\\nwixadd{/p' \
 	      -e '/^\\gdef\\avivolone/p' -e 's/^\\newlabel/% &/p' gen/$$v.aux > gen/$$v.ext; \
 	    cp gen/$$v.aux gen/$$v.xr.aux; \
