@@ -41,28 +41,34 @@ B       := build-san
 endif
 
 .PHONY: all figures doc html check record deps clean bench bench-python install install-doc uninstall memcheck cli python
-all: figures doc html cli
+# The stamp of the book's packages comes first, so that their installation
+# starts as soon as the compilers are in and runs beside the build (below).
+all: $(B)/.deps-book figures doc html cli
 
 # --- dependencies ---------------------------------------------------------
 # Debian 12 packages, the compilers included (a minimal Debian has neither cc
-# nor c++), in two lists.  DEB_PKGS is what make itself uses: gcc and
-# libc6-dev build the library, the programs and the figures' data, gnuplot
-# (with fonts-lmodern for its lettering) draws the figures, noweb and TeX
-# Live tangle and weave the book and typeset both volumes, TeX4ht
-# (texlive-plain-generic, make4ht in texlive-extra-utils) its web edition.
-# DEB_CHECK_PKGS is what only make check uses, installed when make check
-# first runs: libcmocka-dev for the unit tests (no test is built by make),
-# numdiff for the golden files, g++ and pkg-config for the check of the
-# installed library and headers, groff-base for the man page's test,
-# chromium-headless-shell to read the web edition, poppler-utils (pdftotext)
-# and python3 to read the built PDFs, python3-pytest for the Python
-# package's tests.  python3-numpy and python3-distributed are make's: the
-# Python package that make builds imports NumPy, and its ensembles run on
-# Dask.  make deps installs both lists.  Installed
-# with apt-get as root, with sudo otherwise; a user with neither gets the
-# command to run and exit 2.
-DEB_PKGS := gcc libc6-dev noweb libgsl-dev gnuplot-nox fonts-lmodern \
-            texlive-latex-base texlive-latex-recommended texlive-fonts-recommended \
+# nor c++), in three lists.  DEB_PKGS is what make's first steps use: gcc
+# and libc6-dev build the library, the programs and the figures' data,
+# noweb tangles and weaves, gnuplot (with fonts-lmodern for its lettering)
+# draws the figures.  DEB_BOOK_PKGS is what make uses after those: TeX Live
+# typesets both volumes, TeX4ht (texlive-plain-generic, make4ht in
+# texlive-extra-utils) the web edition, and the Python package that make
+# builds imports NumPy (python3-numpy) and runs its ensembles on Dask
+# (python3-distributed).  Those are most of the download and of apt's time
+# (about 50 of 60 seconds on a fresh Debian), and only the book and the
+# Python package wait for their stamp: they install while the library is
+# compiled and the figures' programs run.  DEB_CHECK_PKGS is what only make
+# check uses, installed when make check first runs: libcmocka-dev for the
+# unit tests (no test is built by make), numdiff for the golden files, g++
+# and pkg-config for the check of the installed library and headers,
+# groff-base for the man page's test, chromium-headless-shell to read the
+# web edition, poppler-utils (pdftotext) and python3 to read the built
+# PDFs, python3-pytest for the Python package's tests.  make deps installs
+# all three lists.  Installed with apt-get as root, with sudo otherwise
+# (one apt-get at a time: each stamp waits for the one before); a user
+# with neither gets the command to run and exit 2.
+DEB_PKGS := gcc libc6-dev noweb libgsl-dev gnuplot-nox fonts-lmodern
+DEB_BOOK_PKGS := texlive-latex-base texlive-latex-recommended texlive-fonts-recommended \
             texlive-plain-generic texlive-extra-utils python3-numpy python3-distributed
 DEB_CHECK_PKGS := libcmocka-dev numdiff g++ pkg-config groff-base \
             chromium-headless-shell poppler-utils python3 python3-pytest
@@ -84,12 +90,15 @@ APT_INSTALL = missing=$$(for p in $(1); do \
 $(B)/.deps:
 	@$(call APT_INSTALL,$(DEB_PKGS))
 	@mkdir -p $(B) && touch $@
-$(B)/.deps-check: | $(B)/.deps
+$(B)/.deps-book: | $(B)/.deps
+	@$(call APT_INSTALL,$(DEB_BOOK_PKGS))
+	@mkdir -p $(B) && touch $@
+$(B)/.deps-check: | $(B)/.deps-book
 	@$(call APT_INSTALL,$(DEB_CHECK_PKGS))
 	@mkdir -p $(B) && touch $@
 deps:
-	@$(call APT_INSTALL,$(DEB_PKGS) $(DEB_CHECK_PKGS))
-	@mkdir -p $(B) && touch $(B)/.deps $(B)/.deps-check
+	@$(call APT_INSTALL,$(DEB_PKGS) $(DEB_BOOK_PKGS) $(DEB_CHECK_PKGS))
+	@mkdir -p $(B) && touch $(B)/.deps $(B)/.deps-book $(B)/.deps-check
 
 # --- tangling ---------------------------------------------------------------
 # Every root chunk (found by noroots, never listed by hand) is tangled to
@@ -209,6 +218,7 @@ PY_PKG  := $(patsubst tangle/%,$(B)/%,$(PY_SRC)) $(B)/python/avi/libavi.so.0 \
 	   $(B)/python/layout
 python: $(PY_PKG)
 all: python
+$(PY_PKG): | $(B)/.deps-book
 $(B)/python/avi/%.py: tangle/python/avi/%.py
 	@mkdir -p $(@D)
 	cp $< $@
@@ -338,7 +348,7 @@ DOC_DEPS = doc/avi.tex doc/avi-vol2.tex doc/preamble.tex doc/indexes.tex doc/bib
 PDFLATEX = pdflatex -interaction=nonstopmode -halt-on-error -output-directory=gen
 DOC_STATE = gen/avi.aux gen/avi.toc gen/avi.out gen/avi.ext \
 	    gen/avi-vol2.aux gen/avi-vol2.toc gen/avi-vol2.out gen/avi-vol2.ext
-doc/avi.pdf doc/avi-vol2.pdf &: $(DOC_DEPS)
+doc/avi.pdf doc/avi-vol2.pdf &: $(DOC_DEPS) | $(B)/.deps-book
 	cd doc && touch gen/avi.ext gen/avi-vol2.ext && for round in 1 2 3 4 5 6 7 8 9 10 0; do \
 	  test $$round != 0 || { echo "doc: the two volumes did not settle in ten rounds"; exit 1; }; \
 	  before=$$(cat $(DOC_STATE) 2> /dev/null | md5sum || :); \
@@ -376,7 +386,7 @@ HTML_DEPS = doc/avi.tex doc/preamble.tex doc/indexes.tex doc/bibliography.tex $(
 	    tangle/weave/avi-html.cfg tangle/weave/avi-html.mk4
 MAKE4HT = make4ht -e ../../../tangle/weave/avi-html.mk4 -c ../../../tangle/weave/avi-html.cfg
 html: doc/html/avi.html
-doc/gen/html/pages.stamp: $(HTML_DEPS)
+doc/gen/html/pages.stamp: $(HTML_DEPS) | $(B)/.deps-book
 	rm -rf doc/gen/html && mkdir -p doc/gen/html
 	for f in avi preamble indexes bibliography; do ln -s ../../$$f.tex doc/gen/html/$$f.tex; done \
 	  && ln -s .. doc/gen/html/gen \

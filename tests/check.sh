@@ -105,7 +105,7 @@ count < <(tests/golden.sh compare)
 
 # 5. The build itself: a user who is neither root nor has sudo, missing a
 #    package, gets the apt-get command to run and exit 2, from make deps
-#    and from the stamp of make check's own packages alike.  The user is
+#    and from the stamps of the book's and of make check's packages alike.  The user is
 #    played by a PATH with no sudo on it and an `id` that answers 1000.
 echo "# the build"
 deps_test() {   # deps_test TARGET WHAT MAKE-VARIABLES...
@@ -121,7 +121,8 @@ deps_test() {   # deps_test TARGET WHAT MAKE-VARIABLES...
   else echo "not ok - without root or sudo, $what exits $rc: $out"; fi
 }
 count < <(deps_test deps "make" DEB_PKGS="avi-no-such-package")
-count < <(deps_test @/b/.deps-check "make check" DEB_PKGS= DEB_CHECK_PKGS="avi-no-such-package")
+count < <(deps_test @/b/.deps-book "make, for the book's packages," DEB_PKGS= DEB_BOOK_PKGS="avi-no-such-package")
+count < <(deps_test @/b/.deps-check "make check" DEB_PKGS= DEB_BOOK_PKGS= DEB_CHECK_PKGS="avi-no-such-package")
 
 # 6. Part III's summary and the Speed chapter quote measured numbers only from
 #    the recorded bench run (doc/bench, through \val), and the cost guard's from its pinned
