@@ -169,9 +169,12 @@ $(B)/libavi.so: $(PIC_O)
 $(FIG_BIN): $(B)/fig/%: $(B)/fig/%.o $(FIGKIT_O) $(B)/libavi.a
 	$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LDLIBS) -o $@
 
-# rf-fig1 computes its grid of runs on all cores with OpenMP.
+# rf-fig1 computes its grid of runs on all cores with OpenMP, hier-triple its
+# references and its rotated starts.
 $(B)/fig/rf-fig1.o: CFLAGS += -fopenmp
 $(B)/fig/rf-fig1: LDFLAGS += -fopenmp
+$(B)/fig/hier-triple.o: CFLAGS += -fopenmp
+$(B)/fig/hier-triple: LDFLAGS += -fopenmp
 $(B)/bench/bench-steps: LDFLAGS += -pthread
 $(B)/bench/bench-kepler-wp.o: CFLAGS += -fopenmp
 $(B)/bench/bench-kepler-wp: LDFLAGS += -fopenmp
