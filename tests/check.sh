@@ -105,8 +105,9 @@ count < <(tests/golden.sh compare)
 
 # 5. The build itself: a user who is neither root nor has sudo, missing a
 #    package, gets the apt-get command to run and exit 2, from make deps
-#    and from the stamps of the book's and of make check's packages alike.  The user is
-#    played by a PATH with no sudo on it and an `id` that answers 1000.
+#    and from the stamps of the book's and of make check's packages alike.
+#    The user is played by a PATH with no sudo on it and an `id` that
+#    answers 1000.
 echo "# the build"
 deps_test() {   # deps_test TARGET WHAT MAKE-VARIABLES...
   local tmp rc out target=$1 what=$2; shift 2
