@@ -61,7 +61,8 @@ all: $(B)/.deps-book figures doc html cli
 # check uses, installed when make check first runs: libcmocka-dev for the
 # unit tests (no test is built by make), numdiff for the golden files, g++
 # and pkg-config for the check of the installed library and headers,
-# groff-base for the man page's test, chromium-headless-shell to read the
+# groff-base for the man page's test, strace to widen a race in the
+# program's test, chromium-headless-shell to read the
 # web edition, poppler-utils (pdftotext) and python3 to read the built
 # PDFs, python3-pytest for the Python package's tests.  make deps installs
 # all three lists.  Installed with apt-get as root, with sudo otherwise
@@ -70,7 +71,7 @@ all: $(B)/.deps-book figures doc html cli
 DEB_PKGS := gcc libc6-dev noweb libgsl-dev gnuplot-nox fonts-lmodern
 DEB_BOOK_PKGS := texlive-latex-base texlive-latex-recommended texlive-fonts-recommended \
             texlive-plain-generic texlive-extra-utils python3-numpy python3-distributed
-DEB_CHECK_PKGS := libcmocka-dev numdiff g++ pkg-config groff-base \
+DEB_CHECK_PKGS := libcmocka-dev numdiff g++ pkg-config groff-base strace \
             chromium-headless-shell poppler-utils python3 python3-pytest
 # $(call APT_INSTALL,packages): install those of the packages that are missing.
 APT_INSTALL = missing=$$(for p in $(1); do \
