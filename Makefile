@@ -198,7 +198,7 @@ $(B)/bench/bench-targets: $(FIGKIT_O)
 REF_O    := $(patsubst tangle/%.c,$(B)/%.o,$(REF_C))
 QUAD_BIN := $(B)/test/test-ref $(B)/test/test-after $(B)/test/test-gbs $(B)/bench/bench-kepler-wp $(B)/bench/bench-logh \
             $(B)/bench/bench-threebody-wp $(B)/bench/bench-targets $(B)/fig/outer-solar \
-            $(B)/fig/burrau $(B)/fig/hier-triple
+            $(B)/fig/burrau $(B)/fig/hier-triple $(B)/test/test-kepler-split
 $(B)/libavi-ref.a: $(REF_O)
 	rm -f $@ && ar rcs $@ $^
 $(QUAD_BIN): $(B)/libavi-ref.a
