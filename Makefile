@@ -249,7 +249,9 @@ $(TEST_BIN): $(B)/test/%: $(B)/test/%.o $(B)/libavi.a
 $(BENCH_BIN): $(B)/bench/%: $(B)/bench/%.o $(B)/bench/kit.o $(B)/libavi.a
 	$(CC) $(CFLAGS) $(LDFLAGS) $(filter %.o %/libavi-ref.a,$^) $(B)/libavi.a $(LDLIBS) -o $@
 
--include $(wildcard $(B)/*/*.d $(B)/pic/*/*.d)
+# The compiler's lists of headers, one per object, at every depth the
+# objects have (the library's rooms are two deep: build/lib/schemes/).
+-include $(wildcard $(B)/*/*.d $(B)/*/*/*.d $(B)/pic/*/*.d $(B)/pic/*/*/*.d)
 
 # --- figures ----------------------------------------------------------------
 # A figure program fig/<id>.c writes figures/data/<id>*.tsv and, last, the
