@@ -40,7 +40,7 @@ LDFLAGS += -fsanitize=address,undefined
 B       := build-san
 endif
 
-.PHONY: all figures doc html check record deps clean bench bench-python install install-doc uninstall memcheck cli python
+.PHONY: all figures doc html check record deps clean bench bench-python bench-split install install-doc uninstall memcheck cli python
 # The stamp of the book's packages comes first, so that their installation
 # starts as soon as the compilers are in and runs beside the build (below).
 all: $(B)/.deps-book figures doc html cli
@@ -197,7 +197,7 @@ $(B)/bench/bench-targets: $(FIGKIT_O)
 # libgcc-12-dev, which gcc depends on) only into the programs that use them.
 REF_O    := $(patsubst tangle/%.c,$(B)/%.o,$(REF_C))
 QUAD_BIN := $(B)/test/test-ref $(B)/test/test-after $(B)/test/test-gbs $(B)/bench/bench-kepler-wp $(B)/bench/bench-logh \
-            $(B)/bench/bench-threebody-wp $(B)/bench/bench-targets $(B)/fig/outer-solar \
+            $(B)/bench/bench-threebody-wp $(B)/bench/bench-targets $(B)/bench/bench-split $(B)/fig/outer-solar \
             $(B)/fig/burrau $(B)/fig/hier-triple $(B)/test/test-kepler-split
 $(B)/libavi-ref.a: $(REF_O)
 	rm -f $@ && ar rcs $@ $^
@@ -292,7 +292,7 @@ doc/gen/values.tex: $(FIGS:%=figures/data/%.summary) doc/gen/bench-steps.summary
 	  doc/gen/bench-kepler-long.summary doc/gen/bench-pendulum.summary \
 	  doc/gen/bench-cubic-wp.summary doc/gen/bench-atlas.summary doc/gen/bench-pairs.summary \
 	  doc/gen/bench-targets.summary doc/gen/bench-logh.summary doc/gen/cost-guard.summary \
-  doc/gen/python-speed.summary doc/gen/burrau-ensemble.summary
+  doc/gen/python-speed.summary doc/gen/burrau-ensemble.summary doc/gen/bench-split.summary
 	@mkdir -p doc/gen
 	awk 'function fmt(v, d,  s, m, e) { \
 	       if (v == int(v) && v < 1e15 && v > -1e15) return sprintf("%d", v); \
@@ -462,6 +462,7 @@ bench: $(BENCH_BIN) $(PY_PKG) tangle/bench/burrau_ensemble.py tangle/bench/pytho
 	{ $(MACHINE); $(B)/bench/bench-logh; } | tee figures/data/bench-logh.tsv
 	$(B)/bench/bench-targets figures/data/targets.tmp
 	$(call STAMP,figures/data/targets.tmp,figures/data/bench-targets.tsv,show)
+	$(SPLIT_BENCH)
 	$(PY_BENCH)
 	@mkdir -p $(REC)
 	cp $(BENCH_TSV:%=figures/data/%.tsv) $(REC)/
@@ -470,6 +471,16 @@ bench: $(BENCH_BIN) $(PY_PKG) tangle/bench/burrau_ensemble.py tangle/bench/pytho
 	  echo "# load average (1, 5, 15 min) at the end: $$(cut -d' ' -f1-3 /proc/loadavg)"; \
 	  } > $(REC)/machine.txt
 	rm -f doc/avi.pdf doc/avi-vol2.pdf && $(MAKE) --no-print-directory doc
+
+# The Kepler splittings on the outer solar system (src/95-bench.nw), also
+# alone: make bench-split runs them and records them, and only them, in $(REC).
+SPLIT_BENCH = $(B)/bench/bench-split figures/data/split.tmp figures/data/split-sweeps.tmp \
+	&& $(call STAMP,figures/data/split.tmp,figures/data/bench-split.tsv,show) \
+	&& $(call STAMP,figures/data/split-sweeps.tmp,figures/data/bench-split-sweeps.tsv)
+bench-split: $(B)/bench/bench-split
+	@mkdir -p figures/data $(REC)
+	$(SPLIT_BENCH)
+	cp figures/data/bench-split.tsv figures/data/bench-split-sweeps.tsv $(REC)/
 
 # The Python package's two benchmarks (src/95a-python.nw), also alone:
 # make bench-python runs them and records them, and only them, in $(REC).
@@ -490,13 +501,14 @@ BENCH_TSV := bench-steps bench-steps-loaded bench-kepler-wp bench-kepler-wp-need
              bench-kepler-long bench-kepler-long-costs bench-cubic-wp bench-cubic-wp-needs \
              bench-threebody-wp bench-threebody-wp-reference bench-threebody-wp-needs \
              bench-atlas bench-atlas-summary bench-pendulum bench-targets bench-pairs bench-logh \
-             burrau-ensemble python-speed
+             burrau-ensemble python-speed bench-split bench-split-sweeps
 BENCH_GP  := $(patsubst %,tangle/bench/%.gp,bench-kepler-wp bench-kepler-long bench-cubic-wp \
              bench-threebody-wp bench-atlas burrau-ensemble)
 PLOT  = gnuplot -e "datadir='$(REC)'; outdir='figures'" tangle/bench/$(1).gp
 doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-cubic-summary.awk \
   tangle/bench/gbs-targets.tsv tangle/bench/bench-choose.awk tangle/bench/bench-fails.awk \
-  tangle/bench/bench-atlas-summary.awk tangle/bench/bench-logh-summary.awk tangle/bench/bench-logh-table.awk
+  tangle/bench/bench-atlas-summary.awk tangle/bench/bench-logh-summary.awk tangle/bench/bench-logh-table.awk \
+  tangle/bench/bench-split-table.awk tangle/bench/bench-split-summary.awk
 	@mkdir -p doc/gen figures
 	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{llrrrrrl}" ; \
 	    print "problem & scheme & ns/step & ratio & min--max & loaded & forces/step & target\\\\ \\hline" } \
@@ -642,12 +654,14 @@ doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-
 	  $(REC)/bench-atlas-summary.tsv > doc/gen/bench-atlas.summary
 	awk -f tangle/bench/bench-logh-summary.awk $(REC)/bench-logh.tsv > doc/gen/bench-logh.summary
 	awk -f tangle/bench/bench-logh-table.awk $(REC)/bench-logh.tsv > doc/gen/bench-logh.tex
+	awk -f tangle/bench/bench-split-table.awk $(REC)/bench-split.tsv > doc/gen/bench-split.tex
+	awk -f tangle/bench/bench-split-summary.awk $(REC)/bench-split.tsv > doc/gen/bench-split.summary
 	touch $@
 doc/gen/bench-steps.summary doc/gen/bench-kepler-wp.summary doc/gen/bench-threebody-wp.summary \
   doc/gen/bench-kepler-long.summary doc/gen/bench-pendulum.summary \
   doc/gen/bench-cubic-wp.summary doc/gen/bench-atlas.summary \
   doc/gen/bench-pairs.summary doc/gen/bench-targets.summary doc/gen/bench-logh.summary \
-  doc/gen/python-speed.summary doc/gen/burrau-ensemble.summary: doc/gen/bench.stamp
+  doc/gen/python-speed.summary doc/gen/burrau-ensemble.summary doc/gen/bench-split.summary: doc/gen/bench.stamp
 
 # --- memcheck ---------------------------------------------------------------
 # make memcheck: every unit test and every figure program (with its defaults,
