@@ -191,6 +191,8 @@ $(B)/bench/bench-atlas: LDFLAGS += -fopenmp
 $(B)/bench/bench-atlas: $(FIGKIT_O)
 # bench-targets starts the hierarchical triple from the figure kit's start
 $(B)/bench/bench-targets: $(FIGKIT_O)
+# and bench-split the planet with a companion
+$(B)/bench/bench-split: $(FIGKIT_O)
 
 # The reference solutions in binary128 (src/94-references.nw): an archive of
 # their own, not part of libavi, linked with GCC's libquadmath (Debian:
