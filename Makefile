@@ -474,8 +474,9 @@ bench: $(BENCH_BIN) $(PY_PKG) tangle/bench/burrau_ensemble.py tangle/bench/pytho
 	  } > $(REC)/machine.txt
 	rm -f doc/avi.pdf doc/avi-vol2.pdf && $(MAKE) --no-print-directory doc
 
-# The Kepler splittings on the outer solar system (src/95-bench.nw), also
-# alone: make bench-split runs them and records them, and only them, in $(REC).
+# The Kepler splittings on the outer solar system, the planet with a companion
+# and the Kozai triple (src/95-bench.nw), also alone: make bench-split runs
+# them and records them, and only them, in $(REC).
 SPLIT_BENCH = $(B)/bench/bench-split figures/data/split.tmp figures/data/split-sweeps.tmp \
 	&& $(call STAMP,figures/data/split.tmp,figures/data/bench-split.tsv,show) \
 	&& $(call STAMP,figures/data/split-sweeps.tmp,figures/data/bench-split-sweeps.tsv)
@@ -648,7 +649,7 @@ doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-
 	  tangle/bench/gbs-targets.tsv $(REC)/bench-targets.tsv > doc/gen/gbs-targets.tex
 	awk -f tangle/bench/bench-choose.awk $(REC)/bench-kepler-wp-needs.tsv \
 	  $(REC)/bench-threebody-wp-needs.tsv $(REC)/bench-cubic-wp-needs.tsv \
-	  $(REC)/bench-targets.tsv > doc/gen/bench-choose.tex
+	  $(REC)/bench-targets.tsv $(REC)/bench-split.tsv > doc/gen/bench-choose.tex
 	awk -f tangle/bench/bench-fails.awk $(REC)/bench-atlas-summary.tsv > doc/gen/bench-fails.tex
 	awk -f tangle/bench/bench-cubic-summary.awk $(REC)/bench-cubic-wp.tsv \
 	  $(REC)/bench-cubic-wp-needs.tsv > doc/gen/bench-cubic-wp.summary
