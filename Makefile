@@ -632,20 +632,21 @@ doc/gen/bench.stamp: $(BENCH_TSV:%=$(REC)/%.tsv) $(BENCH_GP) tangle/bench/bench-
 	  $(REC)/bench-pairs.tsv > doc/gen/bench-pairs.summary
 	awk -F'\t' '/^#/ { next } \
 	  { k = $$1 "_t" $$2 "_" $$3 "_" $$4; gsub(/[^a-z0-9]+/, "_", k); print k "_met", $$5; \
+	    if ($$13 != "") print k "_rejected", $$13; \
 	    if ($$5 == 1) { print k "_forces", $$7; print k "_seconds", $$9; \
 	      if ($$11 != "nan") print k "_ratio", $$11 } \
 	    if ($$8 != "inf") print k "_error", $$8 }' \
 	  $(REC)/bench-targets.tsv > doc/gen/bench-targets.summary
-	awk -F'\t' 'BEGIN { print "\\begin{center}\\small\\begin{tabular}{lrrrrrrll}" ; \
+	awk -F'\t' 'BEGIN { print "\\begin{center}\\footnotesize\\setlength{\\tabcolsep}{4pt}\\begin{tabular}{lrrrrrrll}" ; \
 	    print "problem & $$t_f$$ & error & at most & logh-gbs & ttl-gbs & rk8pd & \\multicolumn{2}{l}{time ratios}\\\\ \\hline" } \
 	  /^# cpu/ { cpu = substr($$0, 8) } /^#/ { next } \
 	  FNR == NR { split($$0, f, /[ \t]+/); k = f[1] " " f[2] " " f[3]; want[++n] = k; most[k] = f[4]; next } \
 	  $$4 ~ /-gbs$$/ || $$4 == "rk8pd" { k = $$1 " " $$2 " " $$3; \
-	    cell[k, $$4] = $$5 == 1 ? $$7 : "-- (" $$8 ")"; if ($$4 != "rk8pd" && $$5 == 1 && $$11 != "nan") r[k, $$4] = $$11 } \
+	    cell[k, $$4] = ($$5 == 1 ? $$7 : "-- (" $$8 ")") ($$13 != "" ? sprintf(" [%.0f\\%%]", 100 * $$13) : ""); if ($$4 != "rk8pd" && $$5 == 1 && $$11 != "nan") r[k, $$4] = $$11 } \
 	  END { for (i = 1; i <= n; i++) { k = want[i]; split(k, w, " "); \
 	      printf "%s & %s & %s & %s & %s & %s & %s & %s & %s\\\\\n", w[1], w[2], w[3], most[k], cell[k, "logh-gbs"], \
 	        cell[k, "ttl-gbs"], cell[k, "rk8pd"], r[k, "logh-gbs"], r[k, "ttl-gbs"] } \
-	    print "\\end{tabular}\\\\[1ex] forces, or the best error reached (--); " cpu "\\end{center}" }' \
+	    print "\\end{tabular}\\\\[1ex] forces, or the best error reached (--); in brackets the share of attempts rejected; " cpu "\\end{center}" }' \
 	  tangle/bench/gbs-targets.tsv $(REC)/bench-targets.tsv > doc/gen/gbs-targets.tex
 	awk -f tangle/bench/bench-choose.awk $(REC)/bench-kepler-wp-needs.tsv \
 	  $(REC)/bench-threebody-wp-needs.tsv $(REC)/bench-cubic-wp-needs.tsv \
