@@ -69,8 +69,9 @@ all: $(B)/.deps-book figures doc html cli
 # (one apt-get at a time: each stamp waits for the one before); a user
 # with neither gets the command to run and exit 2.
 DEB_PKGS := gcc libc6-dev noweb libgsl-dev gnuplot-nox fonts-lmodern
+DEB_PY_PKGS := python3 python3-numpy python3-distributed
 DEB_BOOK_PKGS := texlive-latex-base texlive-latex-recommended texlive-fonts-recommended \
-            texlive-plain-generic texlive-extra-utils python3-numpy python3-distributed
+            texlive-plain-generic texlive-extra-utils
 DEB_CHECK_PKGS := libcmocka-dev numdiff g++ pkg-config groff-base strace \
             chromium-headless-shell poppler-utils python3 python3-pytest
 # $(call APT_INSTALL,packages): install those of the packages that are missing.
@@ -91,15 +92,18 @@ APT_INSTALL = missing=$$(for p in $(1); do \
 $(B)/.deps:
 	@$(call APT_INSTALL,$(DEB_PKGS))
 	@mkdir -p $(B) && touch $@
-$(B)/.deps-book: | $(B)/.deps
+$(B)/.deps-python: | $(B)/.deps
+	@$(call APT_INSTALL,$(DEB_PY_PKGS))
+	@mkdir -p $(B) && touch $@
+$(B)/.deps-book: | $(B)/.deps-python
 	@$(call APT_INSTALL,$(DEB_BOOK_PKGS))
 	@mkdir -p $(B) && touch $@
 $(B)/.deps-check: | $(B)/.deps-book
 	@$(call APT_INSTALL,$(DEB_CHECK_PKGS))
 	@mkdir -p $(B) && touch $@
 deps:
-	@$(call APT_INSTALL,$(DEB_PKGS) $(DEB_BOOK_PKGS) $(DEB_CHECK_PKGS))
-	@mkdir -p $(B) && touch $(B)/.deps $(B)/.deps-book $(B)/.deps-check
+	@$(call APT_INSTALL,$(DEB_PKGS) $(DEB_PY_PKGS) $(DEB_BOOK_PKGS) $(DEB_CHECK_PKGS))
+	@mkdir -p $(B) && touch $(B)/.deps $(B)/.deps-python $(B)/.deps-book $(B)/.deps-check
 
 # --- tangling ---------------------------------------------------------------
 # Every root chunk (found by noroots, never listed by hand) is tangled to
@@ -224,7 +228,7 @@ PY_PKG  := $(patsubst tangle/%,$(B)/%,$(PY_SRC)) $(B)/python/avi/libavi.so.0 \
 	   $(B)/python/layout
 python: $(PY_PKG)
 all: python
-$(PY_PKG): | $(B)/.deps-book
+$(PY_PKG): | $(B)/.deps-python
 $(B)/python/avi/%.py: tangle/python/avi/%.py
 	@mkdir -p $(@D)
 	cp $< $@
