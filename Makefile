@@ -71,7 +71,7 @@ all: $(B)/.deps-book figures doc html cli
 DEB_PKGS := gcc libc6-dev noweb libgsl-dev gnuplot-nox fonts-lmodern
 DEB_PY_PKGS := python3 python3-numpy python3-distributed
 DEB_BOOK_PKGS := texlive-latex-base texlive-latex-recommended texlive-fonts-recommended \
-            texlive-plain-generic texlive-extra-utils
+            texlive-plain-generic texlive-extra-utils python3-matplotlib python3-cairo
 DEB_CHECK_PKGS := libcmocka-dev numdiff g++ pkg-config groff-base strace \
             chromium-headless-shell poppler-utils python3 python3-pytest
 # $(call APT_INSTALL,packages): install those of the packages that are missing.
@@ -235,6 +235,12 @@ $(B)/python/avi/%.py: tangle/python/avi/%.py
 $(B)/python/avi/libavi.so.0: $(B)/libavi.so
 	@mkdir -p $(@D)
 	ln -sf ../../libavi.so $@
+# the figure of Result.plot in Part IV, drawn by the package with matplotlib
+PY_FIG := figures/py-plot
+$(PY_FIG).pdf $(PY_FIG).png &: $(PY_PKG) tangle/python/examples/plot.py | $(B)/.deps-book
+	@mkdir -p figures
+	cd $(B)/python && PYTHONPATH=. $(PYTHON) ../../tangle/python/examples/plot.py ../../$(PY_FIG)
+figures: $(PY_FIG).pdf $(PY_FIG).png
 $(B)/python/layout: tangle/python/layout.c tangle/lib/avi.h
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(INC) $< -o $@
@@ -356,7 +362,7 @@ $(WOVEN) &: doc/gen/woven.tex
 # again.  The build fails on an undefined reference, a link to nowhere or
 # an overfull box over 10pt in either.
 DOC_DEPS = doc/avi.tex doc/avi-vol2.tex doc/preamble.tex doc/indexes.tex doc/bibliography.tex $(WOVEN) \
-	   doc/gen/values.tex $(FIGS:%=figures/%.pdf) doc/gen/bench.stamp doc/gen/concordance.tex
+	   doc/gen/values.tex $(FIGS:%=figures/%.pdf) $(PY_FIG).pdf doc/gen/bench.stamp doc/gen/concordance.tex
 PDFLATEX = pdflatex -interaction=nonstopmode -halt-on-error -output-directory=gen
 DOC_STATE = gen/avi.aux gen/avi.toc gen/avi.out gen/avi.ext \
 	    gen/avi-vol2.aux gen/avi-vol2.toc gen/avi-vol2.out gen/avi-vol2.ext
@@ -394,7 +400,7 @@ doc/avi.pdf doc/avi-vol2.pdf &: $(DOC_DEPS) | $(B)/.deps-book
 # numbers (gen/*.ext) into it, and html-linear.sh links the pages in
 # reading order.  A TeX error in the last pass fails the build.
 HTML_DEPS = doc/avi.tex doc/preamble.tex doc/indexes.tex doc/bibliography.tex $(WOVEN) \
-	    doc/gen/values.tex $(FIGS:%=figures/%.png) doc/gen/bench.stamp doc/gen/concordance.tex \
+	    doc/gen/values.tex $(FIGS:%=figures/%.png) $(PY_FIG).png doc/gen/bench.stamp doc/gen/concordance.tex \
 	    tangle/weave/avi-html.cfg tangle/weave/avi-html.mk4
 MAKE4HT = make4ht -e ../../../tangle/weave/avi-html.mk4 -c ../../../tangle/weave/avi-html.cfg
 html: doc/html/avi.html

@@ -36,7 +36,7 @@ count() {   # read TAP-like lines on stdin, echo them, count them
 #    the one header of bench/ is kit.h, the benchmarks' kit's.)
 echo "# root chunks"
 odd=$(noroots "$@" | sed -e 's/^<<//' -e 's/>>$//' | grep -Ev \
-  '^(lib/((problems|schemes|time|driver)/)?[a-z0-9-]+\.[ch]|ref/[a-z0-9-]+\.[ch]|lib/avi\.pc\.in|examples/[a-z0-9-]+\.(c|cc|txt)|test/ckpt-sign\.c|cli/([a-z]+\.c|cli\.h|avi\.1)|figkit/[a-z0-9-]+\.[ch]|fig/[a-z0-9-]+\.(c|gp)|test/test-[a-z0-9-]+\.(c|sh)|golden/[a-z0-9-]+\.tol|bench/([a-z0-9-]+\.(c|gp|awk|tsv)|[a-z_]+\.py|kit\.h)|weave/[a-z0-9-]+\.(awk|cfg|mk4|html|sh|py)|python/(avi/(_?[a-z]+|__init__)|tests/test_[a-z_]+)\.py|python/layout\.c)$')
+  '^(lib/((problems|schemes|time|driver)/)?[a-z0-9-]+\.[ch]|ref/[a-z0-9-]+\.[ch]|lib/avi\.pc\.in|examples/[a-z0-9-]+\.(c|cc|txt)|test/ckpt-sign\.c|cli/([a-z]+\.c|cli\.h|avi\.1)|figkit/[a-z0-9-]+\.[ch]|fig/[a-z0-9-]+\.(c|gp)|test/test-[a-z0-9-]+\.(c|sh)|golden/[a-z0-9-]+\.tol|bench/([a-z0-9-]+\.(c|gp|awk|tsv)|[a-z_]+\.py|kit\.h)|weave/[a-z0-9-]+\.(awk|cfg|mk4|html|sh|py)|python/(avi/(_?[a-z]+|__init__)|tests/test_[a-z_]+|examples/[a-z_]+)\.py|python/layout\.c)$')
 if [ -z "$odd" ]; then
   count <<< "ok - every root chunk names an output file"
 else
